@@ -1,0 +1,118 @@
+#pragma once
+// Runtime selection. A model family is an abstract base that declares
+//
+//     static constexpr const char* familyName = "equationOfState";
+//     using Selector = mfdyn::Registry<EquationOfState, const Dictionary&>;
+//     static std::unique_ptr<EquationOfState> New(const Dictionary& dict) { return Selector::New(dict); }
+//
+// and a model registers itself with one line at the end of its own .cpp:
+//
+//     MFDYN_REGISTER(EquationOfState, MieGruneisen, "mieGruneisen", "Mie-Grüneisen EOS on a linear Us-up Hugoniot");
+//
+// The tables live in one place in libmfdyn_core (RegistryIndex), keyed by family name, so a
+// model registered by a user library loaded with dlopen lands in the same table the solver reads,
+// whatever the symbol visibility of template statics. Each item records the shared object that
+// registered it (dladdr), so listings and duplicate-name errors name libraries.
+#include "core/Dictionary.hpp"
+
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mfdyn {
+
+struct RegistryItem {
+    std::string name;
+    std::string description;
+    std::string library;               // shared object or executable that registered it
+    std::shared_ptr<const void> make;  // std::function<std::unique_ptr<Base>(Args...)>
+};
+
+struct RegistryFamily {
+    std::string name;
+    std::vector<RegistryItem> items;  // sorted by name
+    std::vector<std::string> conflicts;
+
+    const RegistryItem* find(std::string_view type) const;
+    std::vector<std::string> names() const;
+    // "unknown equationOfState type 'mieGrunesen'; did you mean 'mieGruneisen'? Valid types: ..."
+    std::string unknownTypeMessage(std::string_view type) const;
+};
+
+class RegistryIndex {
+public:
+    static RegistryIndex& global();
+    RegistryFamily& family(std::string_view name);
+    const RegistryFamily* findFamily(std::string_view name) const;
+    std::vector<const RegistryFamily*> families() const;
+    void add(std::string_view family, RegistryItem item);
+    // Throws Error naming both libraries if any name was registered twice.
+    void checkConflicts() const;
+    // Text for -listModels: every family and its types with descriptions.
+    std::string listing() const;
+
+private:
+    std::vector<std::unique_ptr<RegistryFamily>> families_;
+};
+
+// The shared object holding `address` ("libmfdyn_core.so", "libmyModels.so", or the program).
+std::string sharedObjectOf(const void* address);
+
+template <class Base, class... Args>
+class Registry {
+public:
+    using Factory = std::function<std::unique_ptr<Base>(Args...)>;
+
+    static void add(const std::string& name, const std::string& description, Factory make,
+                    const void* registrant) {
+        RegistryIndex::global().add(Base::familyName,
+            RegistryItem{name, description, sharedObjectOf(registrant),
+                         std::make_shared<const Factory>(std::move(make))});
+    }
+
+    // Select by the `type` entry of `dict` (which is also the first constructor argument when
+    // Args starts with const Dictionary&).
+    static std::unique_ptr<Base> New(const Dictionary& dict, Args... args) {
+        return New(dict.get<std::string>("type"), dict, std::forward<Args>(args)...);
+    }
+
+    // Select by an explicit type name; `context` locates the error.
+    static std::unique_ptr<Base> New(const std::string& type, const Dictionary& context, Args... args) {
+        RegistryIndex::global().checkConflicts();
+        const RegistryFamily& fam = RegistryIndex::global().family(Base::familyName);
+        const RegistryItem* item = fam.find(type);
+        if (!item) {
+            throw context.found("type") ? context.error("type", fam.unknownTypeMessage(type))
+                                        : InputError(context.where(), context.scope(), fam.unknownTypeMessage(type));
+        }
+        return (*static_cast<const Factory*>(item->make.get()))(std::forward<Args>(args)...);
+    }
+
+    static std::vector<std::string> names() { return RegistryIndex::global().family(Base::familyName).names(); }
+};
+
+// Registration object: one static per model, made by MFDYN_REGISTER.
+template <class Base, class Derived>
+struct Registration {
+    Registration(const char* name, const char* description) {
+        register_(name, description, static_cast<typename Base::Selector*>(nullptr));
+    }
+
+private:
+    template <class... Args>
+    void register_(const char* name, const char* description, Registry<Base, Args...>*) {
+        Registry<Base, Args...>::add(
+            name, description, [](Args... args) -> std::unique_ptr<Base> {
+                return std::make_unique<Derived>(std::forward<Args>(args)...);
+            },
+            this);
+    }
+};
+
+#define MFDYN_CONCAT_IMPL(a, b) a##b
+#define MFDYN_CONCAT(a, b) MFDYN_CONCAT_IMPL(a, b)
+#define MFDYN_REGISTER(Base, Derived, name, description) \
+    static const ::mfdyn::Registration<Base, Derived> MFDYN_CONCAT(mfdynRegistration_, __LINE__) { name, description }
+
+}  // namespace mfdyn
