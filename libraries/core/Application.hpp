@@ -1,0 +1,59 @@
+#pragma once
+// The top of every application: argument parsing, -help, -listModels, -case, -version, and the
+// one place where errors become a message and exit status 1.
+//
+//     int main(int argc, char** argv) {
+//         mfdyn::ApplicationInfo info{"mfDictionary", "Print, query and edit a dictionary.",
+//                                     {{"entry", "key", "the scoped entry to print or set"}}, {"file"}};
+//         return mfdyn::runApplication(argc, argv, info, [](const mfdyn::Arguments& args) { ...; return 0; });
+//     }
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace mfdyn {
+
+struct ApplicationOption {
+    std::string name;      // without the leading '-'
+    std::string argument;  // empty for a flag
+    std::string help;
+};
+
+struct ApplicationInfo {
+    std::string name;
+    std::string synopsis;
+    std::vector<ApplicationOption> options;      // beyond the common ones
+    std::vector<std::string> positional;         // names of required positional arguments
+    bool usesCase = true;                        // accepts -case and loads its controlDict libs for -listModels
+};
+
+class Arguments {
+public:
+    bool has(const std::string& option) const { return options_.count(option) != 0; }
+    // The option's argument; throws InputError when absent.
+    const std::string& value(const std::string& option) const;
+    std::optional<std::string> find(const std::string& option) const;
+    const std::vector<std::string>& positional() const { return positional_; }
+    const std::filesystem::path& caseDir() const { return caseDir_; }
+    const std::string& commandLine() const { return commandLine_; }
+
+    static Arguments parse(int argc, char** argv, const ApplicationInfo& info);
+
+private:
+    std::map<std::string, std::string> options_;
+    std::vector<std::string> positional_;
+    std::filesystem::path caseDir_ = ".";
+    std::string commandLine_;
+};
+
+std::string usage(const ApplicationInfo& info);
+
+// Parses arguments, answers -help/-listModels/-version itself, otherwise runs `body`.
+// Any mfdyn::Error (or other exception) is printed as "Error: ..." on stderr and gives status 1.
+int runApplication(int argc, char** argv, const ApplicationInfo& info,
+                   const std::function<int(const Arguments&)>& body);
+
+}  // namespace mfdyn

@@ -1,0 +1,67 @@
+#pragma once
+// Loops and reductions. Every particle loop goes through parallelFor, every global reduction
+// through Reduce: OpenMP lives here and nowhere in solver code, and an MPI build replaces the
+// bodies of Reduce::sum/max/min with an MPI_Allreduce after the local part.
+//
+// Reductions are deterministic for any thread count: the range is cut into fixed blocks
+// (independent of the number of threads), each block is summed in order, and the block sums
+// are added in block order.
+#include <algorithm>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace mfdyn {
+
+int threadCount();
+
+template <class Body>
+void parallelFor(std::size_t n, Body&& body) {
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) body(i);
+}
+
+struct Reduce {
+    static constexpr std::size_t blockSize = 4096;
+
+    // Sum of term(i) for i in [0, n). `T` must support += and value-initialisation to zero.
+    template <class T, class Term>
+    static T sum(std::size_t n, Term&& term) {
+        const std::size_t blocks = (n + blockSize - 1) / blockSize;
+        std::vector<T> partial(blocks, T{});
+#pragma omp parallel for schedule(static)
+        for (std::size_t b = 0; b < blocks; ++b) {
+            T s{};
+            const std::size_t end = std::min(n, (b + 1) * blockSize);
+            for (std::size_t i = b * blockSize; i < end; ++i) s += term(i);
+            partial[b] = s;
+        }
+        T total{};
+        for (const T& p : partial) total += p;
+        return global(total);
+    }
+
+    template <class Term>
+    static double max(std::size_t n, Term&& term) {
+        double m = -std::numeric_limits<double>::infinity();
+#pragma omp parallel for reduction(max : m) schedule(static)
+        for (std::size_t i = 0; i < n; ++i) m = std::max(m, double(term(i)));
+        return globalMax(m);
+    }
+
+    template <class Term>
+    static double min(std::size_t n, Term&& term) {
+        double m = std::numeric_limits<double>::infinity();
+#pragma omp parallel for reduction(min : m) schedule(static)
+        for (std::size_t i = 0; i < n; ++i) m = std::min(m, double(term(i)));
+        return globalMin(m);
+    }
+
+    // The hooks an MPI build fills in; on one process they return their argument.
+    template <class T>
+    static T global(const T& local) { return local; }
+    static double globalMax(double local) { return local; }
+    static double globalMin(double local) { return local; }
+};
+
+}  // namespace mfdyn
