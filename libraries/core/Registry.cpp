@@ -24,6 +24,11 @@ std::string RegistryFamily::unknownTypeMessage(std::string_view type) const {
     std::ostringstream s;
     s << "unknown " << name << " type '" << type << "'";
     if (auto guess = closestMatch(type, names()); !guess.empty()) s << "; did you mean '" << guess << "'?";
+    return s.str() + validTypes();
+}
+
+std::string RegistryFamily::validTypes() const {
+    std::ostringstream s;
     if (items.empty()) {
         s << "\n    no " << name << " types are registered (is the library that provides them loaded with libs (...)?)";
     } else {

@@ -5,6 +5,8 @@
 //     using Selector = mfdyn::Registry<EquationOfState, const Dictionary&>;
 //     static std::unique_ptr<EquationOfState> New(const Dictionary& dict) { return Selector::New(dict); }
 //
+// (Selector::New(dict, rest...) reads `type` from dict and constructs Derived(dict, rest...).)
+//
 // and a model registers itself with one line at the end of its own .cpp:
 //
 //     MFDYN_REGISTER(EquationOfState, MieGruneisen, "mieGruneisen", "Mie-Grüneisen EOS on a linear Us-up Hugoniot");
@@ -38,6 +40,8 @@ struct RegistryFamily {
     std::vector<std::string> names() const;
     // "unknown equationOfState type 'mieGrunesen'; did you mean 'mieGruneisen'? Valid types: ..."
     std::string unknownTypeMessage(std::string_view type) const;
+    // "\n    valid kernel types:\n        cubicSpline  (libmfdyn_kernels.so)\n ..."
+    std::string validTypes() const;
 };
 
 class RegistryIndex {
@@ -71,20 +75,25 @@ public:
                          std::make_shared<const Factory>(std::move(make))});
     }
 
-    // Select by the `type` entry of `dict` (which is also the first constructor argument when
-    // Args starts with const Dictionary&).
-    static std::unique_ptr<Base> New(const Dictionary& dict, Args... args) {
-        return New(dict.get<std::string>("type"), dict, std::forward<Args>(args)...);
+    // Select by the `type` entry of `dict`, which is passed on as the first constructor argument
+    // (families whose constructor starts with const Dictionary&); `rest` are the other arguments.
+    template <class... Rest>
+    static std::unique_ptr<Base> New(const Dictionary& dict, Rest&&... rest) {
+        if (!dict.found("type")) {
+            const RegistryFamily& fam = RegistryIndex::global().family(Base::familyName);
+            throw InputError(dict.where(), dict.scope(), "missing keyword 'type'" + fam.validTypes());
+        }
+        return NewOfType(dict.get<std::string>("type"), dict, dict, std::forward<Rest>(rest)...);
     }
 
-    // Select by an explicit type name; `context` locates the error.
-    static std::unique_ptr<Base> New(const std::string& type, const Dictionary& context, Args... args) {
+    // Select by an explicit type name; `context` locates the error message.
+    static std::unique_ptr<Base> NewOfType(const std::string& type, const Dictionary& context, Args... args) {
         RegistryIndex::global().checkConflicts();
         const RegistryFamily& fam = RegistryIndex::global().family(Base::familyName);
         const RegistryItem* item = fam.find(type);
         if (!item) {
-            throw context.found("type") ? context.error("type", fam.unknownTypeMessage(type))
-                                        : InputError(context.where(), context.scope(), fam.unknownTypeMessage(type));
+            if (context.found("type")) throw context.error("type", fam.unknownTypeMessage(type));
+            throw InputError(context.where(), context.scope(), fam.unknownTypeMessage(type));
         }
         return (*static_cast<const Factory*>(item->make.get()))(std::forward<Args>(args)...);
     }

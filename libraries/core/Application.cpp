@@ -1,0 +1,131 @@
+#include "core/Application.hpp"
+
+#include "core/Dictionary.hpp"
+#include "core/Error.hpp"
+#include "core/LibraryLoader.hpp"
+#include "core/Registry.hpp"
+
+#include <cctype>
+#include <iostream>
+#include <sstream>
+
+namespace mfdyn {
+
+namespace {
+
+const std::vector<ApplicationOption>& commonOptions() {
+    static const std::vector<ApplicationOption> options{
+        {"case", "dir", "the case directory (default: the current directory)"},
+        {"listModels", "", "list every model family and its types with descriptions, then exit"},
+        {"help", "", "print this usage and exit"},
+        {"version", "", "print the version and exit"},
+    };
+    return options;
+}
+
+const ApplicationOption* findOption(const ApplicationInfo& info, const std::string& name) {
+    for (const auto* list : {&info.options, &commonOptions()})
+        for (const auto& option : *list)
+            if (option.name == name) return &option;
+    return nullptr;
+}
+
+std::vector<std::string> optionNames(const ApplicationInfo& info) {
+    std::vector<std::string> names;
+    for (const auto* list : {&info.options, &commonOptions()})
+        for (const auto& option : *list) names.push_back(option.name);
+    return names;
+}
+
+}  // namespace
+
+const std::string& Arguments::value(const std::string& option) const {
+    auto it = options_.find(option);
+    if (it == options_.end()) throw InputError("missing option -" + option);
+    return it->second;
+}
+
+std::optional<std::string> Arguments::find(const std::string& option) const {
+    auto it = options_.find(option);
+    if (it == options_.end()) return std::nullopt;
+    return it->second;
+}
+
+Arguments Arguments::parse(int argc, char** argv, const ApplicationInfo& info) {
+    Arguments args;
+    for (int i = 0; i < argc; ++i) args.commandLine_ += (i ? " " : "") + std::string(argv[i]);
+    for (int i = 1; i < argc; ++i) {
+        std::string word = argv[i];
+        if (word.size() > 1 && word[0] == '-' && !(std::isdigit(word[1]) || word[1] == '.')) {
+            std::string name = word.substr(word[1] == '-' ? 2 : 1);
+            const ApplicationOption* option = findOption(info, name);
+            if (!option) {
+                std::string message = "unknown option '" + word + "'";
+                if (auto guess = closestMatch(name, optionNames(info)); !guess.empty())
+                    message += "; did you mean '-" + guess + "'?";
+                throw InputError(message + "\n" + usage(info));
+            }
+            if (option->argument.empty()) {
+                args.options_[name] = "";
+            } else {
+                if (i + 1 >= argc) throw InputError("option '" + word + "' needs an argument <" + option->argument + ">");
+                args.options_[name] = argv[++i];
+            }
+        } else {
+            args.positional_.push_back(word);
+        }
+    }
+    if (auto c = args.find("case")) args.caseDir_ = *c;
+    return args;
+}
+
+std::string usage(const ApplicationInfo& info) {
+    std::ostringstream s;
+    s << "Usage: " << info.name << " [OPTIONS]";
+    for (const auto& p : info.positional) s << " <" << p << ">";
+    s << "\n\n" << info.synopsis << "\n\nOptions:\n";
+    for (const auto* list : {&info.options, &commonOptions()}) {
+        for (const auto& option : *list) {
+            if (option.name == "case" && !info.usesCase) continue;
+            std::string head = "  -" + option.name + (option.argument.empty() ? "" : " <" + option.argument + ">");
+            s << head << std::string(head.size() < 24 ? 24 - head.size() : 1, ' ') << option.help << "\n";
+        }
+    }
+    return s.str();
+}
+
+int runApplication(int argc, char** argv, const ApplicationInfo& info,
+                   const std::function<int(const Arguments&)>& body) {
+    try {
+        Arguments args = Arguments::parse(argc, argv, info);
+        if (args.has("help")) {
+            std::cout << usage(info);
+            return 0;
+        }
+        if (args.has("version")) {
+            std::cout << info.name << " (mfdyn " << MFDYN_VERSION << ")\n";
+            return 0;
+        }
+        if (args.has("listModels")) {
+            // A case's own libraries extend the listing, so a user sees what their case can select.
+            const auto controlDict = args.caseDir() / "system" / "controlDict";
+            if (info.usesCase && std::filesystem::exists(controlDict))
+                LibraryLoader::load(Dictionary::read(controlDict), args.caseDir());
+            std::cout << RegistryIndex::global().listing();
+            return 0;
+        }
+        if (args.positional().size() < info.positional.size())
+            throw InputError("missing argument <" + info.positional[args.positional().size()] + ">\n" + usage(info));
+        return body(args);
+    } catch (const Error& e) {
+        std::cout.flush();
+        std::cerr << "\nError: " << e.what() << "\n" << std::endl;
+        return 1;
+    } catch (const std::exception& e) {
+        std::cout.flush();
+        std::cerr << "\nError (internal): " << e.what() << "\n" << std::endl;
+        return 1;
+    }
+}
+
+}  // namespace mfdyn

@@ -1,0 +1,66 @@
+#include "core/Case.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+
+namespace mfdyn {
+
+namespace fs = std::filesystem;
+
+Case::Case(fs::path root) : root_(std::move(root)) {
+    if (!fs::is_directory(root_)) throw InputError("case directory '" + root_.string() + "' does not exist");
+}
+
+namespace {
+Dictionary readCaseFile(const fs::path& file) {
+    if (!fs::exists(file)) throw InputError("cannot find " + file.string());
+    return Dictionary::read(file);
+}
+}  // namespace
+
+Dictionary Case::readSystem(const std::string& name) const { return readCaseFile(systemFile(name)); }
+Dictionary Case::readConstant(const std::string& name) const { return readCaseFile(constantFile(name)); }
+
+std::vector<TimeDirectory> Case::timeDirectories() const {
+    std::vector<TimeDirectory> times;
+    for (const auto& item : fs::directory_iterator(root_)) {
+        if (!item.is_directory()) continue;
+        const std::string name = item.path().filename().string();
+        char* end = nullptr;
+        const double value = std::strtod(name.c_str(), &end);
+        if (name.empty() || *end != '\0' || !std::isfinite(value)) continue;
+        times.push_back({value, name});
+    }
+    std::sort(times.begin(), times.end(), [](const auto& a, const auto& b) { return a.value < b.value; });
+    return times;
+}
+
+std::optional<TimeDirectory> Case::latestTime() const {
+    auto times = timeDirectories();
+    if (times.empty()) return std::nullopt;
+    return times.back();
+}
+
+std::optional<TimeDirectory> Case::findTime(double value) const {
+    for (const auto& t : timeDirectories())
+        if (std::abs(t.value - value) <= 1e-12 * std::max(1.0, std::abs(value))) return t;
+    return std::nullopt;
+}
+
+void writeFileAtomic(const fs::path& file, const std::string& contents) {
+    const fs::path tmp = file.string() + ".tmp-" + std::to_string(::getpid());
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (!out) throw Error("cannot write " + tmp.string());
+        out.write(contents.data(), std::streamsize(contents.size()));
+        out.flush();
+        if (!out) throw Error("error writing " + tmp.string() + " (disk full?)");
+    }
+    fs::rename(tmp, file);
+}
+
+}  // namespace mfdyn
