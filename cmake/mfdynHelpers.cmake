@@ -3,6 +3,13 @@
 function(mfdyn_library name)
     cmake_parse_arguments(ARG "" "" "SOURCES;DEPENDS;PRIVATE_DEPENDS" ${ARGN})
     set(target mfdyn_${name})
+    if(NOT ARG_SOURCES)
+        # A library folder still being written: an interface placeholder keeps the tree configurable.
+        add_library(${target} INTERFACE)
+        add_library(mfdyn::${name} ALIAS ${target})
+        target_link_libraries(${target} INTERFACE ${ARG_DEPENDS})
+        return()
+    endif()
     add_library(${target} SHARED ${ARG_SOURCES})
     set_target_properties(${target} PROPERTIES OUTPUT_NAME mfdyn_${name} EXPORT_NAME ${name})
     add_library(mfdyn::${name} ALIAS ${target})
