@@ -1,0 +1,103 @@
+#pragma once
+// Named particle fields, all of the same length, created when first asked for. A model asks for
+// what it reads and writes in its constructor and keeps the returned reference: the reference
+// stays valid while the field exists (adding other fields does not move it), the data pointer
+// only until the next resize().
+#include "core/Error.hpp"
+#include "particles/Field.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mfdyn {
+
+class FieldStore {
+public:
+    explicit FieldStore(int dimension, std::size_t size = 0);
+    FieldStore(const FieldStore& other);
+    FieldStore& operator=(const FieldStore& other);
+    FieldStore(FieldStore&&) noexcept = default;
+    FieldStore& operator=(FieldStore&&) noexcept = default;
+    virtual ~FieldStore();
+
+    int dimension() const { return dimension_; }
+    std::size_t size() const { return size_; }
+    void resize(std::size_t n);
+
+    // The field `name` of element type T, created (zero-filled) on first request. `kind` only
+    // matters for a 1D tensor, whose C++ type is that of a 1D vector. Throws Error when `name`
+    // exists with another type, naming both.
+    template <class T>
+    std::vector<T>& field(const std::string& name, FieldKind kind = FieldTraits<T>::kind);
+    // Existing field only: throws Error listing the fields there are when it is missing.
+    template <class T>
+    std::vector<T>& requireField(const std::string& name) const;
+    // Existing field only, or nullptr; a type clash still throws.
+    template <class T>
+    std::vector<T>* findField(const std::string& name) const;
+    bool hasField(const std::string& name) const { return findField(name) != nullptr; }
+
+    // Type-erased look-up.
+    FieldBase* findField(const std::string& name) const;
+    FieldBase& field(const std::string& name) const;
+    // Adopt a field made elsewhere (the reader); it must have this store's size and dimension.
+    FieldBase& addField(std::unique_ptr<FieldBase> field);
+    bool removeField(const std::string& name);
+
+    // In creation order.
+    const std::vector<std::unique_ptr<FieldBase>>& fields() const { return fields_; }
+    std::vector<std::string> fieldNames() const;
+
+    std::size_t bytesPerParticle() const;
+    // Table of name, kind, components and bytes per particle, for the log.
+    std::string fieldSummary() const;
+    // Apply one permutation to every field (see FieldBase::reorder).
+    void reorder(const std::vector<std::size_t>& order);
+
+private:
+    template <class T>
+    Field<T>* typed(FieldBase* base, FieldKind kind) const;
+    void checkDimension(const std::string& name, int typeDim, const std::string& typeName) const;
+    [[noreturn]] void typeClash(const FieldBase& existing, const std::string& requested) const;
+    [[noreturn]] void missing(const std::string& name) const;
+    static std::string typeName(FieldKind kind, int dim);
+
+    int dimension_;
+    std::size_t size_;
+    std::vector<std::unique_ptr<FieldBase>> fields_;
+};
+
+template <class T>
+Field<T>* FieldStore::typed(FieldBase* base, FieldKind kind) const {
+    if (!base) return nullptr;
+    if (base->elementType() != typeid(T)) typeClash(*base, typeName(kind, FieldTraits<T>::dim));
+    return static_cast<Field<T>*>(base);
+}
+
+template <class T>
+std::vector<T>& FieldStore::field(const std::string& name, FieldKind kind) {
+    if (auto* f = typed<T>(findField(name), kind)) return f->values;
+    checkDimension(name, FieldTraits<T>::dim, typeName(kind, FieldTraits<T>::dim));
+    if (kind != FieldTraits<T>::kind && !(kind == FieldKind::tensor && FieldTraits<T>::dim == 1))
+        throw Error("field '" + name + "': a " + typeName(FieldTraits<T>::kind, FieldTraits<T>::dim) +
+                    " cannot hold a " + kindName(kind));
+    auto created = std::make_unique<Field<T>>(name, kind, dimension_, size_);
+    auto& values = created->values;
+    fields_.push_back(std::move(created));
+    return values;
+}
+
+template <class T>
+std::vector<T>& FieldStore::requireField(const std::string& name) const {
+    if (auto* f = findField<T>(name)) return *f;
+    missing(name);
+}
+
+template <class T>
+std::vector<T>* FieldStore::findField(const std::string& name) const {
+    auto* f = typed<T>(findField(name), FieldTraits<T>::kind);
+    return f ? &f->values : nullptr;
+}
+
+}  // namespace mfdyn

@@ -1,0 +1,90 @@
+#pragma once
+// Particles in Dim = 1, 2 or 3 dimensions: every field one contiguous array, created on demand
+// (FieldStore). Always present: `position` (vector), `globalId` and `region` (integer).
+//
+// Dim is known only once the particle file is read, so a solver does
+//
+//     withDimension(file.particles->dimension(), [&](auto dim) {
+//         constexpr int Dim = decltype(dim)::value;
+//         auto& particles = particleSetCast<Dim>(*file.particles);
+//         ...  // everything below is compiled for each Dim
+//     });
+//
+// and never branches on the dimension again.
+#include "particles/ParticleSetBase.hpp"
+
+#include <type_traits>
+#include <utility>
+
+namespace mfdyn {
+
+template <int Dim>
+class ParticleSet final : public ParticleSetBase {
+    static_assert(Dim >= 1 && Dim <= 3, "particles are 1D, 2D or 3D");
+
+public:
+    static constexpr int dim = Dim;
+    using VectorType = Vector<Dim>;
+    using TensorType = Tensor<Dim>;
+    using SymmTensorType = SymmTensor<Dim>;
+
+    explicit ParticleSet(std::size_t n = 0);
+    ParticleSet(const ParticleSet&) = default;
+
+    std::vector<VectorType>& position() { return field<VectorType>("position"); }
+    const std::vector<VectorType>& position() const { return requireField<VectorType>("position"); }
+    std::vector<std::int64_t>& globalId() { return field<std::int64_t>("globalId"); }
+    const std::vector<std::int64_t>& globalId() const { return requireField<std::int64_t>("globalId"); }
+    std::vector<std::int64_t>& region() { return field<std::int64_t>("region"); }
+    const std::vector<std::int64_t>& region() const { return requireField<std::int64_t>("region"); }
+
+    // Typed shorthands that need no `.template` in code templated on Dim.
+    std::vector<double>& scalarField(const std::string& name) { return field<double>(name); }
+    std::vector<VectorType>& vectorField(const std::string& name) { return field<VectorType>(name); }
+    std::vector<TensorType>& tensorField(const std::string& name) {
+        return field<TensorType>(name, FieldKind::tensor);
+    }
+    std::vector<SymmTensorType>& symmTensorField(const std::string& name) {
+        return field<SymmTensorType>(name);
+    }
+    std::vector<std::int64_t>& integerField(const std::string& name) { return field<std::int64_t>(name); }
+
+    using ParticleSetBase::addField;
+    FieldBase& addField(const std::string& name, FieldKind kind) override;
+    std::unique_ptr<ParticleSetBase> clone() const override { return std::make_unique<ParticleSet>(*this); }
+};
+
+extern template class ParticleSet<1>;
+extern template class ParticleSet<2>;
+extern template class ParticleSet<3>;
+
+// Calls f(std::integral_constant<int, Dim>{}) for dim = 1, 2, 3 and returns its result; any
+// other value is an InputError.
+template <class F>
+decltype(auto) withDimension(int dim, F&& f) {
+    switch (dim) {
+        case 1:
+            return std::forward<F>(f)(std::integral_constant<int, 1>{});
+        case 2:
+            return std::forward<F>(f)(std::integral_constant<int, 2>{});
+        case 3:
+            return std::forward<F>(f)(std::integral_constant<int, 3>{});
+    }
+    throw InputError("dimension " + std::to_string(dim) + " is not 1, 2 or 3");
+}
+
+// The typed set behind `base`; Error when its dimension is not Dim.
+template <int Dim>
+ParticleSet<Dim>& particleSetCast(ParticleSetBase& base) {
+    if (base.dimension() != Dim)
+        throw Error("particle set is " + std::to_string(base.dimension()) + "D, used as " +
+                    std::to_string(Dim) + "D");
+    return static_cast<ParticleSet<Dim>&>(base);
+}
+
+template <int Dim>
+const ParticleSet<Dim>& particleSetCast(const ParticleSetBase& base) {
+    return particleSetCast<Dim>(const_cast<ParticleSetBase&>(base));
+}
+
+}  // namespace mfdyn

@@ -1,0 +1,149 @@
+#include "particles/TimeDirectory.hpp"
+
+#include "core/Error.hpp"
+#include "particles/VtpWriter.hpp"
+
+#include <unistd.h>
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+namespace fs = std::filesystem;
+
+namespace mfdyn {
+
+namespace {
+
+std::string tmpSuffix() {
+    return ".tmp-" + std::to_string(::getpid());
+}
+
+// A name that parses whole as a finite number.
+bool parseTime(const std::string& name, double& value) {
+    if (name.empty()) return false;
+    const char* end = name.data() + name.size();
+    auto [ptr, ec] = std::from_chars(name.data(), end, value);
+    return ec == std::errc() && ptr == end && std::isfinite(value);
+}
+
+void renameOrThrow(const fs::path& from, const fs::path& to) {
+    std::error_code ec;
+    fs::rename(from, to, ec);
+    if (ec) throw Error("cannot rename '" + from.string() + "' to '" + to.string() + "': " + ec.message());
+}
+
+}  // namespace
+
+void writeDirectoryAtomically(const fs::path& target, const std::function<void(const fs::path&)>& fill) {
+    const fs::path tmp = target.string() + tmpSuffix();
+    std::error_code ec;
+    fs::remove_all(tmp, ec);  // a leftover of this pid, from a previous attempt
+    if (!fs::create_directories(tmp, ec) && ec)
+        throw Error("cannot create directory '" + tmp.string() + "': " + ec.message());
+    try {
+        fill(tmp);
+    } catch (...) {
+        fs::remove_all(tmp, ec);
+        throw;
+    }
+    // rename(2) will not replace a non-empty directory, so the old one is moved aside first;
+    // between the two renames the complete old state still exists under the aside name.
+    const fs::path old = target.string() + ".old" + tmpSuffix();
+    const bool replacing = fs::exists(target);
+    if (replacing) {
+        fs::remove_all(old, ec);
+        renameOrThrow(target, old);
+    }
+    try {
+        renameOrThrow(tmp, target);
+    } catch (...) {
+        if (replacing) fs::rename(old, target, ec);
+        fs::remove_all(tmp, ec);
+        throw;
+    }
+    if (replacing) fs::remove_all(old, ec);
+}
+
+void writeFileAtomically(const fs::path& file, const std::string& contents) {
+    const fs::path tmp = file.string() + tmpSuffix();
+    std::FILE* out = std::fopen(tmp.c_str(), "wb");
+    if (!out) throw Error("cannot write '" + tmp.string() + "': " + std::strerror(errno));
+    bool bad = std::fwrite(contents.data(), 1, contents.size(), out) != contents.size();
+    bad = std::fclose(out) != 0 || bad;
+    if (bad) {
+        std::error_code ec;
+        fs::remove(tmp, ec);
+        throw Error("cannot write '" + tmp.string() + "': " + std::strerror(errno));
+    }
+    renameOrThrow(tmp, file);
+}
+
+fs::path writeTimeDirectory(const fs::path& caseDir, const std::string& timeName,
+                            const ParticleSetBase& particles, const std::vector<ExtraFile>& extraFiles,
+                            std::optional<double> time) {
+    double value = 0.0;
+    if (!time && !parseTime(timeName, value))
+        throw Error("time directory name '" + timeName + "' is not a number and no time was given");
+    if (time) value = *time;
+    for (const auto& [name, contents] : extraFiles)
+        if (name.empty() || name.find('/') != std::string::npos || name == particleFileName || name == "." ||
+            name == "..")
+            throw Error("extra file name '" + name + "' in time directory '" + timeName +
+                        "' is not a plain name");
+    const fs::path target = caseDir / timeName;
+    writeDirectoryAtomically(target, [&](const fs::path& tmp) {
+        writeVtp(tmp / particleFileName, particles, value);
+        for (const auto& [name, contents] : extraFiles) {
+            std::FILE* out = std::fopen((tmp / name).c_str(), "wb");
+            if (!out) throw Error("cannot write '" + (tmp / name).string() + "': " + std::strerror(errno));
+            bool bad = std::fwrite(contents.data(), 1, contents.size(), out) != contents.size();
+            bad = std::fclose(out) != 0 || bad;
+            if (bad) throw Error("cannot write '" + (tmp / name).string() + "': " + std::strerror(errno));
+        }
+    });
+    return target;
+}
+
+std::vector<std::pair<double, std::string>> listTimeDirectories(const fs::path& caseDir) {
+    std::vector<std::pair<double, std::string>> times;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(caseDir, ec)) {
+        if (!entry.is_directory(ec)) continue;
+        const std::string name = entry.path().filename().string();
+        double value;
+        if (name.find(".tmp-") == std::string::npos && parseTime(name, value))
+            times.emplace_back(value, name);
+    }
+    if (ec) throw Error("cannot list case directory '" + caseDir.string() + "': " + ec.message());
+    std::sort(times.begin(), times.end());
+    return times;
+}
+
+bool removeTimeDirectory(const fs::path& caseDir, const std::string& timeName) {
+    const fs::path dir = caseDir / timeName;
+    std::error_code ec;
+    if (!fs::exists(dir, ec)) return false;
+    // Renamed first so that a removal interrupted half-way does not leave a partial time that
+    // listTimeDirectories would offer for restart.
+    const fs::path doomed = dir.string() + ".old" + tmpSuffix();
+    renameOrThrow(dir, doomed);
+    fs::remove_all(doomed, ec);
+    if (ec) throw Error("cannot remove '" + doomed.string() + "': " + ec.message());
+    return true;
+}
+
+std::size_t removeStaleTemporaries(const fs::path& caseDir) {
+    std::size_t removed = 0;
+    std::error_code ec;
+    std::vector<fs::path> doomed;
+    for (const auto& entry : fs::directory_iterator(caseDir, ec))
+        if (entry.path().filename().string().find(".tmp-") != std::string::npos)
+            doomed.push_back(entry.path());
+    for (const auto& p : doomed) removed += fs::remove_all(p, ec) > 0;
+    return removed;
+}
+
+}  // namespace mfdyn

@@ -1,0 +1,39 @@
+#pragma once
+// Particles as a VTK XML PolyData file (.vtp) that ParaView opens as it is and that restart
+// reads back bit for bit (VtpReader.hpp).
+//
+// Layout (VTK XML format version 1.0, https://docs.vtk.org/en/latest/vtk_file_formats/):
+//   <VTKFile type="PolyData" version="1.0" byte_order="LittleEndian" header_type="UInt64">
+//     <PolyData>
+//       <FieldData>   mfdynDimension (Int32, 1 tuple), time (Float64, 1 tuple), and, when not
+//                     empty, regionNames and materialNames (type="String": one tuple per name,
+//                     stored as the names each followed by a NUL byte, index = id)
+//       <Piece NumberOfPoints="n" NumberOfVerts="n" ...>
+//         <PointData> one DataArray per field except position: Float64 or Int64 (integer
+//                     fields), NumberOfComponents 1 (scalar, integer), 3 (vector), 9 (tensor,
+//                     row-major 3x3), 6 (symmTensor, XX YY ZZ XY YZ XZ); components beyond the
+//                     particle dimension are written as zero
+//         <Points>    position, Float64, 3 components (zero-padded below 3D)
+//         <Verts>     connectivity 0..n-1 and offsets 1..n (Int64): one vertex cell per
+//                     particle, so ParaView draws the points without a Glyph filter
+//     <AppendedData encoding="raw">_ then every array as a UInt64 byte count and raw bytes
+//
+// Every array is format="appended" and raw: no base64 or compression, so writing is one pass of
+// fwrite and reading a memcpy per field, and doubles round-trip exactly.
+#include "particles/ParticleSetBase.hpp"
+
+#include <filesystem>
+#include <vector>
+
+namespace mfdyn {
+
+void writeVtp(const std::filesystem::path& file, const ParticleSetBase& particles, double time);
+
+// Components a field of this kind has in the file: 1, 3, 9, 6, 1.
+int vtkComponents(FieldKind kind);
+// For each file component of a field of `kind` in `dim` dimensions, the index of the in-memory
+// component it holds (see componentNames()), or -1 for a zero pad. Used both ways by the writer
+// and the reader.
+std::vector<int> vtkComponentSource(FieldKind kind, int dim);
+
+}  // namespace mfdyn
