@@ -53,6 +53,8 @@ struct Entry {
     mutable bool read = false;
 
     bool isDict() const { return dict != nullptr; }
+    // A deep copy (sub-dictionaries included), for macro expansion and Dictionary copies.
+    std::unique_ptr<Entry> clone() const;
 };
 
 struct UnusedEntry {
@@ -105,6 +107,8 @@ public:
     const Dictionary& subDict(std::string_view key) const;
     // Scoped look-up "a/b/c" or "a.b.c" (used by mfDictionary -entry and $macros).
     const Entry* findScoped(std::string_view scopedKey) const;
+    // Look-up that marks nothing read or asked (macro expansion, editing tools).
+    const Entry* peek(std::string_view key) const;
 
     // Typed look-up; the conversions are ValueTraits<T> below. get throws when the key is missing
     // or the value has the wrong form; the message names file:line:column, scope and expectation.
@@ -146,6 +150,7 @@ public:
 
 private:
     void rebuildIndex();
+    void repointChildren();  // after a move: children still point at the moved-from object
     void collectUnused(std::vector<UnusedEntry>& out) const;
 
     std::string name_;
