@@ -7,6 +7,7 @@
 #include "particles/XmlElement.hpp"
 
 #include <bit>
+#include <cctype>
 #include <cerrno>
 #include <charconv>
 #include <cstdio>
@@ -66,6 +67,11 @@ public:
         if (stop >= size_ || buffer_[stop] != '_')
             fail("truncated or malformed: no '_' starting the appended data");
         dataStart_ = stop + 1;
+        // The arrays' own sizes catch a cut inside the data; this catches a cut after it.
+        std::size_t end = size_;
+        while (end > dataStart_ && std::isspace(static_cast<unsigned char>(buffer_[end - 1]))) --end;
+        if (!std::string_view(buffer_.get() + dataStart_, end - dataStart_).ends_with("</VTKFile>"))
+            fail("truncated: the file does not end with </VTKFile>");
 
         auto pieces = polyData.childrenNamed("Piece");
         if (pieces.size() != 1) fail("expected one <Piece>, found " + std::to_string(pieces.size()));

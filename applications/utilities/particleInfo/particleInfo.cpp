@@ -1,0 +1,116 @@
+// particleInfo: what a particle file holds, without opening ParaView: dimension, particle
+// count, particles per region, and for each field its kind and the range of each component
+// (and of the magnitude, for vectors). Used to check a particleGen result or a restart state.
+#include "core/Application.hpp"
+#include "core/Error.hpp"
+#include "core/Parallel.hpp"
+#include "particles/ParticleSetBase.hpp"
+#include "particles/TimeDirectory.hpp"
+#include "particles/VtpReader.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <limits>
+
+using namespace mfdyn;
+
+namespace {
+
+std::string format(const char* fmt, auto... args) {
+    char line[512];
+    std::snprintf(line, sizeof line, fmt, args...);
+    return line;
+}
+
+std::string timeToRead(const Arguments& args) {
+    if (args.has("time") && args.has("latestTime")) throw InputError("give -time or -latestTime, not both");
+    if (auto name = args.find("time")) return *name;
+    const auto times = listTimeDirectories(args.caseDir());
+    if (times.empty()) throw InputError("no time directories in case '" + args.caseDir().string() + "'");
+    return times.back().second;
+}
+
+void printRange(const std::string& label, const std::string& kind, double lo, double hi) {
+    std::cout << format("    %-22s %-10s %-24.17g %-24.17g\n", label.c_str(), kind.c_str(), lo, hi);
+}
+
+void printField(const FieldBase& f) {
+    const std::size_t n = f.size();
+    const std::string kind = kindName(f.kind());
+    if (f.isInteger()) {
+        // Over the integers themselves: int64 ids beyond 2^53 would blur as doubles.
+        const auto* v = static_cast<const std::int64_t*>(f.data());
+        std::int64_t lo = std::numeric_limits<std::int64_t>::max(),
+                     hi = std::numeric_limits<std::int64_t>::min();
+        for (std::size_t i = 0; i < n; ++i) {
+            lo = std::min(lo, v[i]);
+            hi = std::max(hi, v[i]);
+        }
+        std::cout << format("    %-22s %-10s %-24lld %-24lld\n", f.name().c_str(), kind.c_str(),
+                            (long long)lo, (long long)hi);
+        return;
+    }
+    const auto names = componentNames(f.kind(), f.dimension());
+    for (int c = 0; c < f.components(); ++c) {
+        const std::string label = names[c].empty() ? f.name() : f.name() + "." + names[c];
+        printRange(label, c == 0 ? kind : "",
+                   Reduce::min(n, [&](std::size_t i) { return f.component(i, c); }),
+                   Reduce::max(n, [&](std::size_t i) { return f.component(i, c); }));
+    }
+    if (f.kind() == FieldKind::vector) {
+        auto magnitude = [&](std::size_t i) {
+            double s = 0;
+            for (int c = 0; c < f.components(); ++c) s += f.component(i, c) * f.component(i, c);
+            return std::sqrt(s);
+        };
+        printRange("|" + f.name() + "|", "", Reduce::min(n, magnitude), Reduce::max(n, magnitude));
+    }
+}
+
+int run(const Arguments& args) {
+    const std::string time = timeToRead(args);
+    const auto file = args.caseDir() / time / particleFileName;
+    const ParticleFile data = readVtp(file);
+    const ParticleSetBase& particles = *data.particles;
+
+    std::cout << "file        " << file.string() << "\n"
+              << "dimension   " << particles.dimension() << "\n"
+              << "particles   " << particles.size() << "\n";
+    if (data.hasTime) std::cout << format("time        %.17g\n", data.time);
+    std::cout << "memory      " << particles.bytesPerParticle() << " bytes per particle\n";
+
+    std::cout << "\nregions\n";
+    const auto counts = particles.regionCounts();
+    for (std::size_t r = 0; r < counts.size(); ++r) {
+        const std::string name = r < particles.regionNames.size() ? particles.regionNames[r] : "(unnamed)";
+        std::cout << format("    %3zu  %-24s %zu\n", r, name.c_str(), counts[r]);
+    }
+    if (!particles.materialNames.empty()) {
+        std::cout << "\nmaterials\n";
+        for (std::size_t m = 0; m < particles.materialNames.size(); ++m)
+            std::cout << format("    %3zu  %s\n", m, particles.materialNames[m].c_str());
+    }
+
+    std::cout << "\n" << format("    %-22s %-10s %-24s %-24s\n", "field", "kind", "min", "max");
+    if (particles.size() == 0) {
+        for (const auto& f : particles.fields())
+            std::cout << format("    %-22s %-10s\n", f->name().c_str(), kindName(f->kind()).c_str());
+        return 0;
+    }
+    for (const auto& f : particles.fields()) printField(*f);
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    ApplicationInfo info{
+        "particleInfo",
+        "Print the dimension, particle count, particles per region and the range of every field\n"
+        "of <case>/<time>/particles.vtp (by default the latest time).",
+        {{"time", "name", "the time directory to read"},
+         {"latestTime", "", "read the latest time directory (the default)"}},
+        {}};
+    return runApplication(argc, argv, info, run);
+}
