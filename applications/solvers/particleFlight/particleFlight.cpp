@@ -1,0 +1,17 @@
+// particleFlight: particles in free flight under a runtime-selected body force. The framework's
+// proof case (exact answer for uniformGravity); see tutorials/particleFlight/.
+#include "ballistics/ParticleFlightSolver.hpp"
+#include "core/Application.hpp"
+#include "solver/SolverRun.hpp"
+
+int main(int argc, char** argv) {
+    const mfdyn::ApplicationInfo info{
+        "particleFlight",
+        "Particles in free flight under a body force (constant/particleFlightProperties), velocity Verlet.",
+        {},
+        {},
+        true};
+    return mfdyn::runApplication(argc, argv, info, [](const mfdyn::Arguments& args) {
+        return mfdyn::runSolver<mfdyn::ParticleFlightSolver>(args, "particleFlight");
+    });
+}

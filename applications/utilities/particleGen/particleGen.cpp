@@ -1,0 +1,37 @@
+// particleGen: particles from system/particleGenDict, written to 0/particles.vtp.
+#include "core/Application.hpp"
+#include "core/Case.hpp"
+#include "core/LibraryLoader.hpp"
+#include "core/Log.hpp"
+#include "geometry/ParticleGenerator.hpp"
+#include "particles/PvdIndex.hpp"
+#include "particles/TimeDirectory.hpp"
+
+#include <filesystem>
+
+int main(int argc, char** argv) {
+    const mfdyn::ApplicationInfo info{"particleGen", "Generate particles from system/particleGenDict into 0/particles.vtp.",
+                                      {}, {}, true};
+    return mfdyn::runApplication(argc, argv, info, [](const mfdyn::Arguments& args) {
+        using namespace mfdyn;
+        Case runCase(args.caseDir());
+        Log::info(banner("particleGen", runCase.root(), args.commandLine()));
+        const auto controlDictPath = runCase.systemFile("controlDict");
+        if (std::filesystem::exists(controlDictPath))
+            LibraryLoader::load(Dictionary::read(controlDictPath), runCase.root());
+        const Dictionary dict = runCase.readSystem("particleGenDict");
+        ParticleGenerator generator(dict);
+        const auto particles = generator.generate();
+        for (const auto& u : dict.unusedEntries())
+            Log::warning(u.where.str() + ": '" + u.scopedKey + "' was never read" +
+                         (u.suggestion.empty() ? "" : " (did you mean '" + u.suggestion + "'?)"));
+        writeTimeDirectory(runCase.root(), "0", *particles, {}, 0.0);
+        PvdIndex pvd(runCase.root() / "particles.pvd");
+        pvd.add(0.0, std::string("0/") + particleFileName);
+        pvd.write();
+        Log::info(generator.reportTable());
+        Log::info("Wrote " + std::to_string(particles->size()) + " particles (" + std::to_string(particles->dimension()) +
+                  "D) to " + (runCase.root() / "0" / particleFileName).string());
+        return 0;
+    });
+}

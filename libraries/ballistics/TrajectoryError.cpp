@@ -1,0 +1,79 @@
+// trajectoryError: positions and velocities against the body force's exact trajectory from the
+// state at the start of the run. For particle a with error e_a = |x_a - x_exact(t)|:
+//
+//   L1 = (1/N) Σ e_a,   L2 = sqrt((1/N) Σ e_a²),   Linf = max e_a        (in m, and m/s)
+//
+// written to errorNorms.csv (time,field,L1,L2,Linf) for fields `position` and `velocity`.
+#include "ballistics/TrajectoryError.hpp"
+
+#include "ballistics/ParticleFlightSolver.hpp"
+#include "core/Parallel.hpp"
+
+#include <cmath>
+
+namespace mfdyn {
+
+namespace {
+const BodyForceSolver& bodyForceSolver(const Dictionary& dict, const RunContext& context) {
+    auto* solver = dynamic_cast<const BodyForceSolver*>(&context);
+    if (!solver) throw dict.error("type", "trajectoryError needs a solver with a body force (particleFlight)");
+    return *solver;
+}
+}  // namespace
+
+TrajectoryError::TrajectoryError(const Dictionary& dict, const std::string& name, const RunContext& context)
+    : FunctionObject(dict, name, context),
+      solver_(bodyForceSolver(dict, context)),
+      t0_(context.time().value()),
+      norms_(outputFile("errorNorms.csv"), name) {
+    const FieldStore& fields = context.fields();
+    const int dim = fields.dimension();
+    const FieldBase& x = fields.field("position");
+    const FieldBase& v = fields.field("velocity");
+    x0_.resize(fields.size() * dim);
+    v0_.resize(fields.size() * dim);
+    for (std::size_t i = 0; i < fields.size(); ++i)
+        for (int d = 0; d < dim; ++d) x0_[i * dim + d] = x.component(i, d), v0_[i * dim + d] = v.component(i, d);
+    double probe[3], probeV[3];
+    if (fields.size() && !solver_.bodyForce().exactTrajectory(x0_.data(), v0_.data(), 0.0, probe, probeV))
+        throw dict.error("type", "the selected bodyForce has no exact trajectory to compare with");
+}
+
+void TrajectoryError::write() {
+    const FieldStore& fields = context().fields();
+    const int dim = fields.dimension();
+    const std::size_t n = fields.size();
+    if (n == 0) return;
+    const FieldBase& x = fields.field("position");
+    const FieldBase& v = fields.field("velocity");
+    const double tau = context().time().value() - t0_;
+    struct Norms {
+        double l1x = 0, l2x = 0, l1v = 0, l2v = 0;
+        Norms& operator+=(const Norms& o) {
+            l1x += o.l1x, l2x += o.l2x, l1v += o.l1v, l2v += o.l2v;
+            return *this;
+        }
+    };
+    std::vector<double> ex(n), ev(n);
+    const Norms sums = Reduce::sum<Norms>(n, [&](std::size_t i) {
+        double xe[3], ve[3];
+        solver_.bodyForce().exactTrajectory(&x0_[i * dim], &v0_[i * dim], tau, xe, ve);
+        double dx = 0, dv = 0;
+        for (int d = 0; d < dim; ++d) {
+            dx += std::pow(x.component(i, d) - xe[d], 2);
+            dv += std::pow(v.component(i, d) - ve[d], 2);
+        }
+        ex[i] = std::sqrt(dx), ev[i] = std::sqrt(dv);
+        return Norms{ex[i], dx, ev[i], dv};
+    });
+    double maxX = 0, maxV = 0;
+    for (std::size_t i = 0; i < n; ++i) maxX = std::max(maxX, ex[i]), maxV = std::max(maxV, ev[i]);
+    const double t = context().time().value();
+    norms_.add(t, "position", sums.l1x / n, std::sqrt(sums.l2x / n), maxX);
+    norms_.add(t, "velocity", sums.l1v / n, std::sqrt(sums.l2v / n), maxV);
+}
+
+MFDYN_REGISTER(FunctionObject, TrajectoryError, "trajectoryError",
+               "particle positions and velocities against the body force's exact trajectory");
+
+}  // namespace mfdyn

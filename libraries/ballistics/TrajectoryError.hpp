@@ -1,0 +1,21 @@
+#pragma once
+#include "functionObjects/FunctionObject.hpp"
+
+namespace mfdyn {
+
+class BodyForceSolver;
+
+class TrajectoryError final : public FunctionObject {
+public:
+    TrajectoryError(const Dictionary& dict, const std::string& name, const RunContext& context);
+    void write() override;
+    std::vector<ErrorNorm> errorNorms() const override { return norms_.latest(); }
+
+private:
+    const BodyForceSolver& solver_;
+    double t0_;
+    std::vector<double> x0_, v0_;
+    ErrorNormWriter norms_;
+};
+
+}  // namespace mfdyn

@@ -1,0 +1,20 @@
+#pragma once
+#include "functionObjects/FunctionObject.hpp"
+
+namespace mfdyn {
+
+class ConservedQuantities final : public FunctionObject {
+public:
+    ConservedQuantities(const Dictionary& dict, const std::string& name, const RunContext& context);
+    void write() override;
+    std::vector<std::string> summary() const override;
+
+private:
+    std::vector<double> measure() const;
+
+    std::vector<std::string> columns_;
+    std::unique_ptr<CsvFile> csv_;
+    std::vector<double> first_, last_;
+};
+
+}  // namespace mfdyn

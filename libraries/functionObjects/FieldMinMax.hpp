@@ -1,0 +1,17 @@
+#pragma once
+#include "functionObjects/FunctionObject.hpp"
+
+namespace mfdyn {
+
+class FieldMinMax final : public FunctionObject {
+public:
+    FieldMinMax(const Dictionary& dict, const std::string& name, const RunContext& context);
+    void write() override;
+
+private:
+    std::vector<std::string> fields_;
+    bool components_;
+    std::unique_ptr<CsvFile> csv_;
+};
+
+}  // namespace mfdyn

@@ -1,0 +1,94 @@
+#include "functionObjects/FunctionObject.hpp"
+
+#include <cmath>
+
+namespace mfdyn {
+
+FunctionObject::FunctionObject(const Dictionary& dict, const std::string& name, const RunContext& context)
+    : name_(name), context_(context) {
+    const std::string control = dict.getOrDefault<std::string>("writeControl", "timeStep");
+    if (control == "timeStep") {
+        control_ = Control::timeStep;
+        interval_ = dict.getOrDefault<double>("writeInterval", 1.0);
+        if (interval_ < 1 || interval_ != std::floor(interval_))
+            throw dict.error("writeInterval", "with writeControl timeStep, writeInterval is a whole number of steps >= 1");
+    } else if (control == "runTime" || control == "adjustableRunTime") {
+        control_ = Control::runTime;
+        interval_ = dict.get<double>("writeInterval");
+        if (!(interval_ > 0)) throw dict.error("writeInterval", "writeInterval must be positive");
+    } else if (control == "writeTime") {
+        control_ = Control::writeTime;
+        interval_ = 1;
+    } else {
+        std::string message = "'" + control + "' is not a valid writeControl; valid choices: timeStep | runTime | "
+                              "adjustableRunTime | writeTime";
+        throw dict.error("writeControl", message);
+    }
+    dict.getOrDefault<std::string>("type", "");  // read by the selector
+}
+
+FunctionObject::~FunctionObject() = default;
+
+bool FunctionObject::due(bool solverWrites) {
+    const Time& time = context_.time();
+    std::int64_t index = 0;
+    switch (control_) {
+        case Control::timeStep: index = time.timeIndex() / std::int64_t(interval_); break;
+        case Control::runTime: index = std::int64_t(std::floor(time.value() / interval_ * (1 + 1e-9) + 1e-9)); break;
+        case Control::writeTime:
+            if (!solverWrites && lastIndex_ >= 0) return false;
+            index = time.timeIndex();
+            break;
+    }
+    if (index == lastIndex_) return false;
+    lastIndex_ = index;
+    return true;
+}
+
+std::filesystem::path FunctionObject::outputFile(const std::string& fileName) const {
+    return context_.runCase().postProcessing() / name_ / context_.startTimeName() / fileName;
+}
+
+ErrorNormWriter::ErrorNormWriter(const std::filesystem::path& file, std::string source)
+    : csv_(file, {"time", "field", "L1", "L2", "Linf"}), source_(std::move(source)) {}
+
+void ErrorNormWriter::add(double time, const std::string& field, double L1, double L2, double Linf) {
+    csv_.row(time, field, {L1, L2, Linf});
+    for (auto& norm : latest_) {
+        if (norm.field == field) {
+            norm = {source_, field, time, L1, L2, Linf};
+            return;
+        }
+    }
+    latest_.push_back({source_, field, time, L1, L2, Linf});
+}
+
+FunctionObjectList::FunctionObjectList(const Dictionary& controlDict, const RunContext& context) {
+    const Dictionary* functions = controlDict.findDict("functions");
+    if (!functions) return;
+    for (const auto& entry : functions->entries()) {
+        if (!entry->isDict()) throw functions->error(entry->key, "expected a dictionary { type ...; } for function object '" + entry->key + "'");
+        objects_.push_back(FunctionObject::New(functions->subDict(entry->key), entry->key, context));
+    }
+}
+
+void FunctionObjectList::execute(bool solverWrites) {
+    for (auto& object : objects_)
+        if (object->due(solverWrites)) object->write();
+}
+
+std::vector<ErrorNorm> FunctionObjectList::errorNorms() const {
+    std::vector<ErrorNorm> all;
+    for (const auto& object : objects_)
+        for (auto& norm : object->errorNorms()) all.push_back(norm);
+    return all;
+}
+
+std::vector<std::string> FunctionObjectList::summary() const {
+    std::vector<std::string> all;
+    for (const auto& object : objects_)
+        for (auto& line : object->summary()) all.push_back(object->name() + ": " + line);
+    return all;
+}
+
+}  // namespace mfdyn

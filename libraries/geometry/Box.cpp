@@ -1,0 +1,29 @@
+// box: the axis-aligned box min <= x < max (half-open, so boxes that share a face do not both
+// claim the particles on it). Volume Π (max_d - min_d).
+#include "geometry/Box.hpp"
+
+namespace mfdyn {
+
+Box::Box(const Dictionary& dict, int dimension) : Shape(dict, dimension) {
+    box_.min = readPoint(dict, "min");
+    box_.max = readPoint(dict, "max");
+    for (int d = 0; d < dimension; ++d)
+        if (!(box_.max[d] > box_.min[d]))
+            throw dict.error("max", "max must exceed min in every direction (direction " + std::to_string(d + 1) + ")");
+}
+
+bool Box::inside(const double* x) const {
+    for (int d = 0; d < dimension(); ++d)
+        if (x[d] < box_.min[d] || x[d] >= box_.max[d]) return false;
+    return true;
+}
+
+std::optional<double> Box::volume() const {
+    double v = 1;
+    for (int d = 0; d < dimension(); ++d) v *= box_.max[d] - box_.min[d];
+    return v;
+}
+
+MFDYN_REGISTER(Shape, Box, "box", "axis-aligned box between min and max");
+
+}  // namespace mfdyn

@@ -1,0 +1,75 @@
+#pragma once
+// One run of a solver application on a case: opens the case, loads `libs`, reads the start time's
+// particles, and runs the shared time loop. An application is
+//
+//     int main(int argc, char** argv) {
+//         return mfdyn::runApplication(argc, argv, info, [](const mfdyn::Arguments& args) {
+//             return mfdyn::runSolver<mfdyn::ParticleFlightSolver>(args, "particleFlight");
+//         });
+//     }
+//
+// where ParticleFlightSolver<Dim> is constructed from a SolverRun&.
+#include "core/Application.hpp"
+#include "core/Case.hpp"
+#include "core/Dictionary.hpp"
+#include "core/Log.hpp"
+#include "core/Time.hpp"
+#include "particles/ParticleSet.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace mfdyn {
+
+class Solver;
+
+class SolverRun {
+public:
+    SolverRun(const Arguments& args, std::string application);
+    ~SolverRun();
+
+    const std::string& application() const { return application_; }
+    const Case& runCase() const { return case_; }
+    Time& time() { return *time_; }
+    const Time& time() const { return *time_; }
+    const Dictionary& controlDict() const { return controlDict_; }
+    const std::string& startTimeName() const { return startTimeName_; }
+    int dimension() const { return particles_->dimension(); }
+    // The particles read from the start time; the solver takes them over.
+    std::unique_ptr<ParticleSetBase> takeParticles() { return std::move(particles_); }
+    // The start time's state dictionary, if the start is a restart.
+    const Dictionary* restartState() const { return state_ ? &*state_ : nullptr; }
+
+    // The time loop; returns the exit status.
+    int run(Solver& solver);
+
+private:
+    void write(Solver& solver);
+    void purge();
+    void checkUnusedEntries(const Solver& solver) const;
+    void summary(const Solver& solver, double wallSeconds, double startTime);
+
+    std::string application_;
+    Case case_;
+    Dictionary controlDict_;
+    std::unique_ptr<Time> time_;
+    std::string startTimeName_;
+    std::unique_ptr<ParticleSetBase> particles_;
+    std::optional<Dictionary> state_;
+    Stopwatch clock_;
+    double writeSeconds_ = 0;
+    double setUpSeconds_ = 0;
+    std::string lastWritten_;
+};
+
+template <template <int> class SolverType>
+int runSolver(const Arguments& args, const std::string& application) {
+    SolverRun run(args, application);
+    return withDimension(run.dimension(), [&](auto dim) {
+        SolverType<decltype(dim)::value> solver(run);
+        return run.run(solver);
+    });
+}
+
+}  // namespace mfdyn
