@@ -501,10 +501,13 @@ std::size_t skipBlanks(const std::string& text, std::size_t offset) {
 [[noreturn]] void describeFailure(const Source& src, const ParseState& st, std::size_t where,
                                   const std::string& which) {
     const std::string& text = src.text;
-    if (which != "end of comment" && which != "'\"'" && which != "exponent" && which != "number end")
-        where = skipBlanks(text, where);
-    const std::string found = foundAt(text, where);
-    const char at = where < text.size() ? text[where] : '\0';
+    // A missing ';' is reported right after the value it should end, the rest at the next token.
+    const std::size_t next = skipBlanks(text, where);
+    if (which != "end of comment" && which != "'\"'" && which != "exponent" && which != "number end" &&
+        which != "';'")
+        where = next;
+    const std::string found = foundAt(text, which == "';'" ? next : where);
+    const char at = next < text.size() ? text[next] : '\0';
     const ParseState::Open* inner = st.open.empty() ? nullptr : &st.open.back();
 
     if (which == "end of comment") fail(src, where, "unterminated comment: '/*' is never closed by '*/'");
