@@ -4,6 +4,7 @@
 // a Dictionary or an mfdyn::Error; a crash, a sanitizer report or any other exception fails.
 #include "core/Dictionary.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>

@@ -1,0 +1,41 @@
+# cmake -DTOOL=<mfDictionary> -DWORK=<dir> -P mfDictionaryTest.cmake
+# Edits a dictionary in place and checks that only the edited spans changed.
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+file(WRITE ${WORK}/inc "fromInclude 5;\n")
+file(WRITE ${WORK}/dict "// header\na   1;   // keep me\nsub\n{\n    x (1 2);  /* block */\n}\n#include \"inc\"\n")
+
+function(run)
+    execute_process(COMMAND ${TOOL} ${WORK}/dict ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    set(rc ${rc} PARENT_SCOPE)
+    set(out "${out}" PARENT_SCOPE)
+    set(err "${err}" PARENT_SCOPE)
+endfunction()
+
+function(check what expected actual)
+    if(NOT "${expected}" STREQUAL "${actual}")
+        message(FATAL_ERROR "${what}:\nexpected [${expected}]\nactual   [${actual}]")
+    endif()
+endfunction()
+
+run(-entry sub/x)
+check("-entry" "(1 2)\n" "${out}")
+run(-keywords)
+check("-keywords" "a\nsub\nfromInclude\n" "${out}")
+run(-entry a -set "2.5")
+run(-entry sub/x -set "(3 4)")
+run(-entry sub/new/y -set "word")
+run(-entry fromInclude -set "6")
+file(READ ${WORK}/dict edited)
+check("edited file"
+    "// header\na   2.5;   // keep me\nsub\n{\n    x (3 4);  /* block */\n    new\n    {\n        y word;\n    }\n}\n#include \"inc\"\nfromInclude 6;\n"
+    "${edited}")
+run(-entry a -set "1 )")
+if(rc EQUAL 0 OR NOT err MATCHES "expected ';' after the value of 'a'")
+    message(FATAL_ERROR "a bad value was accepted: rc=${rc} ${err}")
+endif()
+file(READ ${WORK}/dict unchanged)
+check("file after a refused edit" "${edited}" "${unchanged}")
+if(EXISTS ${WORK}/dict.tmp)
+    message(FATAL_ERROR "temporary file left behind")
+endif()
