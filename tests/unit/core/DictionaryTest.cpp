@@ -428,3 +428,20 @@ TEST(DictionaryPerformance, parsesOneMegabyteQuickly) {
 }
 
 }  // namespace
+
+namespace {
+
+TEST(DictionaryLimits, deepNestingIsAnErrorNotACrash) {
+    const std::string deep = "a " + std::string(100000, '(') + ";";
+    try {
+        Dictionary::parse(deep, "deep");
+        FAIL();
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("deep:1:202: nesting deeper than 200 levels"), std::string::npos)
+            << e.what();
+    }
+    const std::string fine = "a " + std::string(150, '(') + std::string(150, ')') + ";";
+    EXPECT_EQ(Dictionary::parse(fine, "fine").entry("a").tokens.size(), 1u);
+}
+
+}  // namespace
