@@ -6,7 +6,10 @@
 // C-infinity with compact support. c_d has no closed form; Kernel::initialise computes it by
 // Gauss-Legendre quadrature, converged to 1e-15 relative (the note's [C] values 2.2523, 2.1436,
 // 2.2671 are checked in the tests; the thesis prints 4.826 and 5.08 for d = 2, 3, which are wrong).
-// Its spectrum is not guaranteed positive (kernelSpectrum measures it; see tests/unit/kernels).
+// Not positive definite: its flat top and steep flanks make it box-like, and its transform has a
+// deep negative lobe, min W^ = -0.0975 at kh = 6.68 (1D), -0.063 (2D), -0.043 (3D) (kernelSpectrum;
+// the 1D value checked against a brute-force quadrature in tests/unit/kernels). So it does not have
+// property 6 of sph-impact.md 1.1, which the thesis asks of a kernel.
 #include "kernels/Mollifier.hpp"
 
 #include <cmath>

@@ -89,5 +89,17 @@ TEST(KernelSpectrum, splinesHaveNegativeLobesIn2DAnd3D) {
     }
 }
 
+TEST(KernelSpectrum, mollifierHasDeepNegativeLobe) {
+    // Reference: 1D transform at k h = 6.67588 by a separate trapezoidal sum of 200000 intervals
+    // over [-1, 1] (exponentially accurate for this C-infinity bump): -0.0974733381125.
+    auto kernel = makeKernel("type mollifier;");
+    EXPECT_NEAR(KernelSpectrum::transformAt(*kernel, 1, 1.0, 6.67588), -0.0974733381125, 1e-11);
+    for (int dim = 1; dim <= 3; ++dim) {
+        const KernelSpectrum spectrum(*kernel, dim);
+        EXPECT_FALSE(spectrum.positiveDefinite()) << dim;
+        EXPECT_LT(spectrum.minimum(), -0.04) << dim;
+    }
+}
+
 }  // namespace
 }  // namespace mfdyn
