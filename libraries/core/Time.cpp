@@ -196,17 +196,22 @@ double Time::chooseDeltaT(const TimeStepVote& stable) {
     }
     desiredDeltaT_ = dt;
 
-    // Land exactly on the end time and, for adjustableRunTime, on the write times: spread the
-    // remaining interval over equal steps rather than leaving one sliver step.
-    auto landOn = [&](double target) {
+    // Land exactly on the write times (adjustableRunTime) by spreading the remaining interval over
+    // equal steps rather than leaving one sliver step, and on the end time with the last step.
+    // The last step before a landing is always `target - t` exactly, so a run that ends at a
+    // write time and is restarted from it takes the same steps as one that never stopped.
+    auto landOn = [&](double target, bool spread) {
         const double remaining = target - value_;
         if (remaining <= 0) return;
-        const double steps = std::ceil(remaining / dt * (1 - landing));
-        if (steps <= 1) dt = std::min(dt, remaining);
-        else if (steps < 1e9) dt = std::min(dt, remaining / steps);
+        if (remaining <= dt * (1 + landing)) {
+            dt = remaining;
+        } else if (spread) {
+            const double steps = std::ceil(remaining / dt * (1 - landing));
+            if (steps < 1e9) dt = std::min(dt, remaining / steps);
+        }
     };
-    if (writeControl_ == WriteControl::adjustableRunTime) landOn(nextWriteTime());
-    if (endTime_ - value_ <= dt * (1 + landing)) dt = endTime_ - value_;
+    if (writeControl_ == WriteControl::adjustableRunTime) landOn(nextWriteTime(), true);
+    landOn(endTime_, false);
     deltaT_ = dt;
     return dt;
 }

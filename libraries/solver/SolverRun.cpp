@@ -127,7 +127,7 @@ void SolverRun::checkUnusedEntries(const Solver& solver) const {
         }
     }
     if (count == 0) return;
-    if (controlDict_.getOrDefault<bool>("strictDictionaries", false))
+    if (controlDict_.getOptional<bool>("strictDictionaries").value_or(false))
         throw InputError(std::to_string(count) + " dictionary entries were never read (strictDictionaries yes):" + s.str());
     Log::warning(std::to_string(count) + " dictionary entries were never read:" + s.str());
 }
@@ -136,7 +136,8 @@ int SolverRun::run(Solver& solver) {
     Time& time = *time_;
     if (state_) solver.restoreSolverState(*state_);
     FunctionObjectList functions(controlDict_, solver);
-    controlDict_.getOrDefault<bool>("strictDictionaries", false);
+    if (auto named = controlDict_.getOptional<std::string>("application"); named && *named != application_)
+        Log::warning("controlDict names application '" + *named + "' but this is " + application_);
     checkUnusedEntries(solver);
 
     const ParticleSetBase& particles = solver.particles();
