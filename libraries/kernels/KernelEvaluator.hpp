@@ -12,7 +12,9 @@
 // Accuracy: the table has Kernel::tableCells cells; the spline knots (u = 1/2, 1/3, 2/3) fall on
 // cell boundaries, so the cubic pieces of M4 are reproduced exactly and the other kernels carry an
 // interpolation error of order (1/cells)^4 max|w''''| / 384 in W and one order less in dW/dr
-// (below 1e-10 relative to W(0) for every built-in kernel; tests/unit/kernels checks it).
+// (tests/unit/kernels checks W to 1e-10 W(0) and dW/dr, dW/dh to 1e-8 of their maxima for every
+// registered kernel). Cost: about 10 ns per W + dW/dr pair at random r (Wendland C2, 3D, -O3),
+// against 75 ns through the exact virtual members.
 //
 // The evaluator points into tables owned by its Kernel: keep the Kernel alive while it is used.
 #include "core/Tensor.hpp"
