@@ -363,6 +363,7 @@ private:
     void copy(const Array& a, FieldBase& f, std::size_t n) const {
         const std::vector<int> source = vtkComponentSource(f.kind(), f.dimension());
         const int width = a.components, components = f.components();
+        if (n == 0) return;  // empty vectors may have null data, which memcpy must not see
         if (f.isInteger()) {
             auto* out = static_cast<std::int64_t*>(f.data());
             if (a.type.scalar == Scalar::int64) return void(std::memcpy(out, a.bytes, n * 8));

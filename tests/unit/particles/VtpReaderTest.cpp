@@ -91,7 +91,8 @@ void expectBitIdentical(const ParticleSetBase& a, const ParticleSetBase& b) {
         ASSERT_NE(g, nullptr) << f->name();
         EXPECT_EQ(g->kind(), f->kind()) << f->name();
         EXPECT_EQ(g->elementType(), f->elementType()) << f->name();
-        EXPECT_EQ(std::memcmp(f->data(), g->data(), f->size() * f->elementBytes()), 0) << f->name();
+        if (f->size() > 0)
+            EXPECT_EQ(std::memcmp(f->data(), g->data(), f->size() * f->elementBytes()), 0) << f->name();
     }
     EXPECT_EQ(a.regionNames, b.regionNames);
     EXPECT_EQ(a.materialNames, b.materialNames);
@@ -230,6 +231,25 @@ TEST(VtpReader, TruncatedFileIsAnErrorNamingTheFile) {
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("missing.vtp"), std::string::npos) << e.what();
     }
+}
+
+TEST(VtpReader, EveryCutOfASmallFileIsReported) {
+    // Every length short of the final newline must fail cleanly (and, under a sanitizer, without
+    // reading past the buffer).
+    ScratchDir dir("everyCut");
+    writeVtp(dir.path() / "p.vtp", makeParticles<2>(2, 9), 0.0);
+    const std::string whole = readFile(dir.path() / "p.vtp");
+    ASSERT_EQ(whole.back(), '\n');
+    std::size_t failures = 0;
+    for (std::size_t length = 0; length + 1 < whole.size(); ++length) {
+        writeFile(dir.path() / "cut.vtp", whole.substr(0, length));
+        try {
+            readVtp(dir.path() / "cut.vtp");
+        } catch (const InputError&) {
+            ++failures;
+        }
+    }
+    EXPECT_EQ(failures, whole.size() - 1);
 }
 
 TEST(VtpReader, BadXmlAndUnknownTypesAreReported) {
