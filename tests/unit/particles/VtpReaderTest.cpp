@@ -91,8 +91,9 @@ void expectBitIdentical(const ParticleSetBase& a, const ParticleSetBase& b) {
         ASSERT_NE(g, nullptr) << f->name();
         EXPECT_EQ(g->kind(), f->kind()) << f->name();
         EXPECT_EQ(g->elementType(), f->elementType()) << f->name();
-        if (f->size() > 0)
+        if (f->size() > 0) {
             EXPECT_EQ(std::memcmp(f->data(), g->data(), f->size() * f->elementBytes()), 0) << f->name();
+        }
     }
     EXPECT_EQ(a.regionNames, b.regionNames);
     EXPECT_EQ(a.materialNames, b.materialNames);
