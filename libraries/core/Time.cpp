@@ -176,7 +176,8 @@ bool Time::running() const {
 double Time::nextWriteTime() const { return double(writeIndex_ + 1) * writeInterval_; }
 
 double Time::chooseDeltaT(const TimeStepVote& stable) {
-    if (!(stable.deltaT > 0) || !std::isfinite(stable.deltaT))
+    // An infinite vote means "no limit" (particles at rest); zero, negative or NaN means the state is broken.
+    if (!(stable.deltaT > 0))
         throw RunError("the stable time step (" + stable.reason + ") is " + std::to_string(stable.deltaT) +
                        " at time " + timeName_ + ", step " + std::to_string(timeIndex_));
     double dt;
