@@ -5,6 +5,8 @@
 #include "core/LibraryLoader.hpp"
 #include "core/Registry.hpp"
 
+#include <dlfcn.h>
+
 #include <cctype>
 #include <iostream>
 #include <sstream>
@@ -35,6 +37,12 @@ std::vector<std::string> optionNames(const ApplicationInfo& info) {
     for (const auto* list : {&info.options, &commonOptions()})
         for (const auto& option : *list) names.push_back(option.name);
     return names;
+}
+
+std::filesystem::path sharedObjectPath(const void* address) {
+    Dl_info info{};
+    if (dladdr(address, &info) && info.dli_fname) return info.dli_fname;
+    return {};
 }
 
 }  // namespace
@@ -107,6 +115,14 @@ int runApplication(int argc, char** argv, const ApplicationInfo& info,
             return 0;
         }
         if (args.has("listModels")) {
+            // Every toolkit library beside this one, so any application lists every family.
+            const std::filesystem::path self = sharedObjectPath(reinterpret_cast<const void*>(&runApplication));
+            std::error_code ec;
+            for (const auto& item : std::filesystem::directory_iterator(self.parent_path(), ec)) {
+                const std::string name = item.path().filename().string();
+                if (name.rfind("libmfdyn_", 0) == 0 && item.path().extension() == ".so")
+                    dlopen(item.path().c_str(), RTLD_NOW | RTLD_GLOBAL);
+            }
             // A case's own libraries extend the listing, so a user sees what their case can select.
             const auto controlDict = args.caseDir() / "system" / "controlDict";
             if (info.usesCase && std::filesystem::exists(controlDict))
