@@ -32,7 +32,7 @@ std::vector<TimeDirectory> Case::timeDirectories() const {
         const std::string name = item.path().filename().string();
         char* end = nullptr;
         const double value = std::strtod(name.c_str(), &end);
-        if (name.empty() || *end != '\0' || !std::isfinite(value)) continue;
+        if (name.empty() || *end != '\0' || !std::isfinite(value)) continue;  // also skips *.tmp-<pid>
         times.push_back({value, name});
     }
     std::sort(times.begin(), times.end(), [](const auto& a, const auto& b) { return a.value < b.value; });
@@ -49,18 +49,6 @@ std::optional<TimeDirectory> Case::findTime(double value) const {
     for (const auto& t : timeDirectories())
         if (std::abs(t.value - value) <= 1e-12 * std::max(1.0, std::abs(value))) return t;
     return std::nullopt;
-}
-
-void writeFileAtomic(const fs::path& file, const std::string& contents) {
-    const fs::path tmp = file.string() + ".tmp-" + std::to_string(::getpid());
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw Error("cannot write " + tmp.string());
-        out.write(contents.data(), std::streamsize(contents.size()));
-        out.flush();
-        if (!out) throw Error("error writing " + tmp.string() + " (disk full?)");
-    }
-    fs::rename(tmp, file);
 }
 
 }  // namespace mfdyn

@@ -39,7 +39,4 @@ private:
     std::filesystem::path root_;
 };
 
-// Writes `contents` to `file` atomically: a temporary file beside it, then rename.
-void writeFileAtomic(const std::filesystem::path& file, const std::string& contents);
-
 }  // namespace mfdyn

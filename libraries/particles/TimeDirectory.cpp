@@ -1,5 +1,7 @@
 #include "particles/TimeDirectory.hpp"
 
+#include "core/Case.hpp"
+
 #include "core/Error.hpp"
 #include "particles/VtpWriter.hpp"
 
@@ -109,16 +111,7 @@ fs::path writeTimeDirectory(const fs::path& caseDir, const std::string& timeName
 
 std::vector<std::pair<double, std::string>> listTimeDirectories(const fs::path& caseDir) {
     std::vector<std::pair<double, std::string>> times;
-    std::error_code ec;
-    for (const auto& entry : fs::directory_iterator(caseDir, ec)) {
-        if (!entry.is_directory(ec)) continue;
-        const std::string name = entry.path().filename().string();
-        double value;
-        if (name.find(".tmp-") == std::string::npos && parseTime(name, value))
-            times.emplace_back(value, name);
-    }
-    if (ec) throw Error("cannot list case directory '" + caseDir.string() + "': " + ec.message());
-    std::sort(times.begin(), times.end());
+    for (const auto& t : Case(caseDir).timeDirectories()) times.emplace_back(t.value, t.name);
     return times;
 }
 
