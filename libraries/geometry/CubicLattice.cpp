@@ -9,11 +9,12 @@ namespace mfdyn {
 
 CubicLattice::CubicLattice(const Dictionary& dict, int dimension) : Lattice(dict, dimension) {}
 
-std::vector<double> CubicLattice::points(const BoundingBox& box) const {
+std::vector<double> CubicLattice::sites(const BoundingBox& box) const {
     const int dim = dimension();
     const double dx = spacing();
     std::array<long, 3> count{1, 1, 1};
-    for (int d = 0; d < dim; ++d) count[d] = std::max(1L, long(std::ceil((box.max[d] - box.min[d]) / dx - 1e-9)));
+    for (int d = 0; d < dim; ++d)
+        count[d] = std::max(1L, long(std::ceil((box.max[d] - box.min[d]) / dx - 1e-9)));
     std::vector<double> out;
     out.reserve(std::size_t(count[0] * count[1] * count[2]) * dim);
     for (long k = 0; k < count[2]; ++k)
@@ -25,7 +26,9 @@ std::vector<double> CubicLattice::points(const BoundingBox& box) const {
     return out;
 }
 
-double CubicLattice::pointVolume() const { return std::pow(spacing(), dimension()); }
+double CubicLattice::pointVolume() const {
+    return std::pow(spacing(), dimension());
+}
 
 MFDYN_REGISTER(Lattice, CubicLattice, "cubic", "cell-centred square/cubic lattice of the given spacing");
 

@@ -6,8 +6,10 @@ namespace mfdyn {
 class CubicLattice final : public Lattice {
 public:
     CubicLattice(const Dictionary& dict, int dimension);
-    std::vector<double> points(const BoundingBox& box) const override;
     double pointVolume() const override;
+
+protected:
+    std::vector<double> sites(const BoundingBox& box) const override;
 };
 
 }  // namespace mfdyn

@@ -1,10 +1,17 @@
 #pragma once
 // Where particles sit inside a shape, selected by name:
 //     lattice { type cubic; spacing 0.01; }
+//     lattice { type hexagonal; spacing 0.01; jitter 0.1; seed 42; }
 // A lattice fills a bounding box with points, each carrying the volume it represents.
+// Every lattice takes `jitter` (default 0): each point is moved by a displacement uniform in
+// [−jitter·spacing, +jitter·spacing] per component, drawn from std::mt19937_64 seeded with `seed`
+// (default 1) in lattice order, so a jittered lattice is still identical run to run. Jitter breaks
+// the lattice's symmetry (regular lattices can hold spurious symmetric modes); it is kept below ½
+// so that two points never swap places.
 #include "core/Registry.hpp"
 #include "geometry/Shape.hpp"
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -23,15 +30,23 @@ public:
     int dimension() const { return dimension_; }
     double spacing() const { return spacing_; }
 
+    double jitter() const { return jitter_; }
+
     // Points covering `box`, `dimension()` coordinates each, in a fixed order (so generation is
-    // identical run to run).
-    virtual std::vector<double> points(const BoundingBox& box) const = 0;
+    // identical run to run): the lattice sites, jittered when asked.
+    std::vector<double> points(const BoundingBox& box) const;
     // Volume per lattice point (spacing^dim for cubic).
     virtual double pointVolume() const = 0;
+
+protected:
+    // The regular lattice sites covering `box`, in a fixed order.
+    virtual std::vector<double> sites(const BoundingBox& box) const = 0;
 
 private:
     int dimension_;
     double spacing_;
+    double jitter_;
+    std::uint64_t seed_;
 };
 
 }  // namespace mfdyn

@@ -1,0 +1,15 @@
+#pragma once
+#include "geometry/Lattice.hpp"
+
+namespace mfdyn {
+
+class HexagonalLattice final : public Lattice {
+public:
+    HexagonalLattice(const Dictionary& dict, int dimension);
+    double pointVolume() const override;
+
+protected:
+    std::vector<double> sites(const BoundingBox& box) const override;
+};
+
+}  // namespace mfdyn
