@@ -5,7 +5,8 @@ namespace mfdyn {
 template <int Dim>
 NeighbourReferenceList<Dim>::NeighbourReferenceList(const std::vector<Vector<Dim>>& referencePositions,
                                                     const std::vector<double>& supportRadius,
-                                                    NeighbourDomain<Dim> domain, NeighbourSearchOptions options)
+                                                    NeighbourDomain<Dim> domain,
+                                                    NeighbourSearchOptions options)
     : domain_(domain), referencePosition_(referencePositions) {
     NeighbourSearch<Dim> search(std::move(domain), options);
     list_ = search.build(referencePositions, supportRadius);

@@ -10,8 +10,9 @@ namespace mfdyn {
 template <int Dim>
 class NeighbourReferenceList {
 public:
-    NeighbourReferenceList(const std::vector<Vector<Dim>>& referencePositions, const std::vector<double>& supportRadius,
-                           NeighbourDomain<Dim> domain = {}, NeighbourSearchOptions options = {});
+    NeighbourReferenceList(const std::vector<Vector<Dim>>& referencePositions,
+                           const std::vector<double>& supportRadius, NeighbourDomain<Dim> domain = {},
+                           NeighbourSearchOptions options = {});
     NeighbourReferenceList(const std::vector<Vector<Dim>>& referencePositions, double supportRadius,
                            NeighbourDomain<Dim> domain = {}, NeighbourSearchOptions options = {});
 

@@ -16,6 +16,14 @@ constexpr std::size_t rowBlock = 1024;
 // never drop a cell holding a neighbour; an extra cell only costs distance checks.
 constexpr double cellPadding = 1e-6;
 
+// floor() of a value well inside the int64 range. Without SSE4.1 std::floor is a library call,
+// and the query computes a few dozen of them per particle. Of a non-negative value the
+// conversion alone is the floor.
+inline std::int64_t floorToInt(double v) {
+    const auto i = std::int64_t(v);
+    return i - std::int64_t(double(i) > v);
+}
+
 }  // namespace
 
 template <int Dim>
@@ -29,7 +37,8 @@ NeighbourSearch<Dim>::NeighbourSearch(NeighbourDomain<Dim> domain, NeighbourSear
 }
 
 template <int Dim>
-void NeighbourSearch<Dim>::bin(const std::vector<Vector<Dim>>& positions, const std::vector<double>& supportRadius) {
+void NeighbourSearch<Dim>::bin(const std::vector<Vector<Dim>>& positions,
+                               const std::vector<double>& supportRadius) {
     if (supportRadius.size() != positions.size())
         throw Error("NeighbourSearch: " + std::to_string(supportRadius.size()) + " support radii for " +
                     std::to_string(positions.size()) + " particles");
@@ -51,13 +60,15 @@ void NeighbourSearch<Dim>::binSorted(const std::vector<Vector<Dim>>& positions, 
     auto r = [&](std::size_t i) { return constantRadius ? radius[0] : radius[i]; };
 
     const std::size_t badRadii =
-        constantRadius ? std::size_t(!(std::isfinite(radius[0]) && radius[0] >= 0))
-                       : Reduce::sum<std::size_t>(n, [&](std::size_t i) { return !(std::isfinite(r(i)) && r(i) >= 0); });
+        constantRadius
+            ? std::size_t(!(std::isfinite(radius[0]) && radius[0] >= 0))
+            : Reduce::sum<std::size_t>(n, [&](std::size_t i) { return !(std::isfinite(r(i)) && r(i) >= 0); });
     if (badRadii > 0) throw Error("NeighbourSearch: support radii must be finite and non-negative");
     const std::size_t badPositions =
         Reduce::sum<std::size_t>(n, [&](std::size_t i) { return std::size_t(!positions[i].allFinite()); });
     if (badPositions > 0)
-        throw Error("NeighbourSearch: " + std::to_string(badPositions) + " particle positions are not finite");
+        throw Error("NeighbourSearch: " + std::to_string(badPositions) +
+                    " particle positions are not finite");
 
     order_.resize(n);
     sortedPosition_.resize(n);
@@ -91,8 +102,8 @@ void NeighbourSearch<Dim>::binSorted(const std::vector<Vector<Dim>>& positions, 
     // overflow before it is coarsened.
     double width = maxRadius_ / options_.cellsPerRadius;
     if (!(width > 0)) width = std::max(extent.maxCoeff(), 1.0);
-    const double cellLimit =
-        std::min(std::max(1.0, options_.maxCellsPerParticle * double(n)), double(std::numeric_limits<Index>::max() - 2));
+    const double cellLimit = std::min(std::max(1.0, options_.maxCellsPerParticle * double(n)),
+                                      double(std::numeric_limits<Index>::max() - 2));
     std::array<double, Dim> cellsAlong{};
     for (;;) {
         double total = 1;
@@ -118,7 +129,7 @@ void NeighbourSearch<Dim>::binSorted(const std::vector<Vector<Dim>>& positions, 
         const Vector<Dim> x = domain_.anyPeriodic() ? domain_.wrap(positions[i]) : positions[i];
         std::int64_t c = 0;
         for (int d = Dim - 1; d >= 0; --d) {
-            const double t = std::floor((x[d] - origin_[d]) / width_[d]);
+            const double t = (x[d] - origin_[d]) / width_[d];
             c = c * cells_[d] + std::int64_t(std::clamp(t, 0.0, double(cells_[d] - 1)));
         }
         cellOf[i] = Index(c);
@@ -139,37 +150,100 @@ void NeighbourSearch<Dim>::binSorted(const std::vector<Vector<Dim>>& positions, 
 
 template <int Dim>
 template <PairCriterion C, bool Periodic>
-void NeighbourSearch<Dim>::gatherRow(std::size_t k, std::vector<Index>& out) const {
+void NeighbourSearch<Dim>::gatherRow(std::size_t k, std::vector<Index>& out,
+                                     std::vector<std::array<Index, 2>>& runs) const {
     const Vector<Dim>& xi = sortedPosition_[k];
     const double ri2 = sortedRadius2_[k];
     // Any j with d < max(r_i, r_j) is within maxRadius; the other criteria stay within r_i.
     const double reach = C == PairCriterion::either ? maxRadius_ : std::sqrt(ri2);
     const bool includeSelf = options_.includeSelf;
 
-    // Cell range of the query box [x - reach, x + reach] in each direction. In a periodic
-    // direction the range is left unwrapped (it may start below 0 or end past the last cell) and
-    // folded when visited; one that would cover a cell twice is cut to the whole period.
+    // Cell range [first, last] of the query interval [x - half, x + half] along direction d. In a
+    // periodic direction the range is left unwrapped (it may start below 0 or end past the last
+    // cell) and folded when visited; one that would cover a cell twice is cut to the whole period.
     const Vector<Dim> x = Periodic ? domain_.wrap(xi) : xi;
-    std::array<std::int64_t, Dim> first{}, last{};
-    for (int d = 0; d < Dim; ++d) {
-        const double t = (x[d] - origin_[d]) / width_[d];
-        const double s = reach / width_[d] + cellPadding;
+    std::array<double, Dim> t{};
+    for (int d = 0; d < Dim; ++d) t[d] = (x[d] - origin_[d]) / width_[d];
+    auto range = [&](int d, double half, std::int64_t& first, std::int64_t& last) {
+        const double s = half / width_[d] + cellPadding;
         const double top = double(cells_[d] - 1);
         if (Periodic && domain_.periodic(d)) {
-            first[d] = std::int64_t(std::floor(std::clamp(t - s, -top - 1, 2 * top + 1)));
-            last[d] = std::int64_t(std::floor(std::clamp(t + s, -top - 1, 2 * top + 1)));
-            if (last[d] - first[d] + 1 >= cells_[d]) {
-                first[d] = 0;
-                last[d] = cells_[d] - 1;
+            first = floorToInt(std::clamp(t[d] - s, -top - 1, 2 * top + 1));
+            last = floorToInt(std::clamp(t[d] + s, -top - 1, 2 * top + 1));
+            if (last - first + 1 >= cells_[d]) {
+                first = 0;
+                last = cells_[d] - 1;
+                return true;
             }
         } else {
-            first[d] = std::int64_t(std::clamp(std::floor(t - s), 0.0, top));
-            last[d] = std::int64_t(std::clamp(std::floor(t + s), 0.0, top));
+            first = std::int64_t(std::clamp(t[d] - s, 0.0, top));
+            last = std::int64_t(std::clamp(t[d] + s, 0.0, top));
+        }
+        return false;
+    };
+    std::array<std::int64_t, Dim> first{}, last{};
+    std::array<bool, Dim> wholePeriod{};
+    for (int d = 1; d < Dim; ++d) wholePeriod[d] = range(d, reach, first[d], last[d]);
+    auto fold = [](std::int64_t c, std::int64_t n) { return c < 0 ? c + n : (c >= n ? c - n : c); };
+    // Distance from x to the slab of (unwrapped) cell c along d, shrunk by the padding. Zero when
+    // the range covers the whole period, where c is not the nearest image. In an open direction
+    // the edge cells reach to infinity: they hold the particles outside a given box.
+    auto gap = [&](int d, std::int64_t c) {
+        if (wholePeriod[d]) return 0.0;
+        const bool open = !(Periodic && domain_.periodic(d));
+        const double below = open && c == 0 ? 0.0 : double(c) - t[d];
+        const double above = open && c == cells_[d] - 1 ? 0.0 : t[d] - double(c + 1);
+        const double g = std::max(below, above) - cellPadding;
+        return g > 0 ? g * width_[d] : 0.0;
+    };
+
+    // Cells along x are contiguous in the cell order, so a row of cells is one run of particles
+    // (two where a periodic range wraps). Each row is cut to the chord of the query sphere through
+    // it, which leaves in 3D about 60% of the particles of the full box of cells to check.
+    const double reach2 = reach * reach;
+    runs.clear();
+    auto run = [&](Index begin, Index end) { runs.push_back({begin, end}); };
+    {
+        auto cellRow = [&](std::int64_t base, double gap2) {
+            if (gap2 > reach2) return;  // not >=: with reach 0 the own cell still holds self
+            std::int64_t lo, hi;
+            range(0, std::sqrt(reach2 - gap2), lo, hi);
+            const std::int64_t n = cells_[0];
+            if (lo >= 0 && hi < n) {
+                run(cellStart_[base + lo], cellStart_[base + hi + 1]);
+            } else {
+                run(cellStart_[base + fold(lo, n)], cellStart_[base + n]);
+                run(cellStart_[base], cellStart_[base + fold(hi, n) + 1]);
+            }
+        };
+        if constexpr (Dim == 1) {
+            cellRow(0, 0.0);
+        } else if constexpr (Dim == 2) {
+            for (std::int64_t cy = first[1]; cy <= last[1]; ++cy) {
+                const double gy = gap(1, cy);
+                cellRow(fold(cy, cells_[1]) * cells_[0], gy * gy);
+            }
+        } else {
+            for (std::int64_t cz = first[2]; cz <= last[2]; ++cz) {
+                const double gz = gap(2, cz);
+                for (std::int64_t cy = first[1]; cy <= last[1]; ++cy) {
+                    const double gy = gap(1, cy);
+                    cellRow((fold(cz, cells_[2]) * cells_[1] + fold(cy, cells_[1])) * cells_[0],
+                            gy * gy + gz * gz);
+                }
+            }
         }
     }
-    auto fold = [](std::int64_t c, std::int64_t n) { return c < 0 ? c + n : (c >= n ? c - n : c); };
 
-    auto visit = [&](std::size_t begin, std::size_t end) {
+    // Room for every candidate first, so that the test below can store each one and advance
+    // only past those that pass: no branch on the outcome, which is close to a coin toss.
+    std::size_t candidates = 0;
+    for (const auto& [begin, end] : runs) candidates += end - begin;
+    const std::size_t start = out.size();
+    out.resize(start + candidates);
+    Index* const row = out.data() + start;
+    std::size_t found = 0;
+    for (const auto& [begin, end] : runs) {
         for (std::size_t l = begin; l < end; ++l) {
             Vector<Dim> dx;
             if constexpr (Periodic)
@@ -184,30 +258,12 @@ void NeighbourSearch<Dim>::gatherRow(std::size_t k, std::vector<Index>& out) con
                 in = d2 < std::min(ri2, sortedRadius2_[l]);
             else
                 in = d2 < ri2;
-            if (l == k) in = includeSelf;
-            if (in) out.push_back(order_[l]);
+            in = l == k ? includeSelf : in;
+            row[found] = order_[l];
+            found += in;
         }
-    };
-    // Cells along x are contiguous in the cell order, so a row of cells is one run of particles
-    // (two where a periodic range wraps).
-    auto visitCellRow = [&](std::int64_t base) {
-        const std::int64_t n = cells_[0];
-        if (first[0] >= 0 && last[0] < n) {
-            visit(cellStart_[base + first[0]], cellStart_[base + last[0] + 1]);
-        } else {
-            visit(cellStart_[base + fold(first[0], n)], cellStart_[base + n]);
-            visit(cellStart_[base], cellStart_[base + fold(last[0], n) + 1]);
-        }
-    };
-    if constexpr (Dim == 1) {
-        visitCellRow(0);
-    } else if constexpr (Dim == 2) {
-        for (std::int64_t cy = first[1]; cy <= last[1]; ++cy) visitCellRow(fold(cy, cells_[1]) * cells_[0]);
-    } else {
-        for (std::int64_t cz = first[2]; cz <= last[2]; ++cz)
-            for (std::int64_t cy = first[1]; cy <= last[1]; ++cy)
-                visitCellRow((fold(cz, cells_[2]) * cells_[1] + fold(cy, cells_[1])) * cells_[0]);
     }
+    out.resize(start + found);
 }
 
 template <int Dim>
@@ -223,10 +279,11 @@ void NeighbourSearch<Dim>::fillBlocks() {
     for (std::int64_t b = 0; b < blocks; ++b) {
         std::vector<Index>& buffer = blockIndices_[std::size_t(b)];
         buffer.clear();
+        std::vector<std::array<Index, 2>> runs;
         const std::size_t end = std::min(n, std::size_t(b + 1) * rowBlock);
         for (std::size_t k = std::size_t(b) * rowBlock; k < end; ++k) {
             const std::size_t start = buffer.size();
-            gatherRow<C, Periodic>(k, buffer);
+            gatherRow<C, Periodic>(k, buffer, runs);
             if (options_.sortRows && !std::is_sorted(buffer.begin() + start, buffer.end()))
                 std::sort(buffer.begin() + start, buffer.end());
             rowLength_[k] = Index(buffer.size() - start);

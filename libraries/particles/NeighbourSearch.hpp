@@ -100,7 +100,8 @@ public:
 private:
     void binSorted(const std::vector<Vector<Dim>>& positions, const double* radius, bool constantRadius);
     template <PairCriterion C, bool Periodic>
-    void gatherRow(std::size_t k, std::vector<Index>& out) const;
+    // Appends row k (place k of the cell order) to out; runs is scratch space.
+    void gatherRow(std::size_t k, std::vector<Index>& out, std::vector<std::array<Index, 2>>& runs) const;
     template <PairCriterion C, bool Periodic>
     void fillBlocks();
 

@@ -12,7 +12,8 @@ VerletList<Dim>::VerletList(double skin, NeighbourDomain<Dim> domain, NeighbourS
 }
 
 template <int Dim>
-bool VerletList<Dim>::update(const std::vector<Vector<Dim>>& positions, const std::vector<double>& supportRadius) {
+bool VerletList<Dim>::update(const std::vector<Vector<Dim>>& positions,
+                             const std::vector<double>& supportRadius) {
     if (supportRadius.size() != positions.size())
         throw Error("VerletList: " + std::to_string(supportRadius.size()) + " support radii for " +
                     std::to_string(positions.size()) + " particles");
@@ -44,13 +45,15 @@ bool VerletList<Dim>::needsRebuild(const std::vector<Vector<Dim>>& positions, co
     if (!built_ || positions.size() != builtPosition_.size()) return true;
     const std::size_t n = positions.size();
     if (n == 0) return false;
-    const double growth = constantRadius ? radius[0] - builtRadius_[0]
-                                         : Reduce::max(n, [&](std::size_t i) { return radius[i] - builtRadius_[i]; });
+    const double growth = constantRadius
+                              ? radius[0] - builtRadius_[0]
+                              : Reduce::max(n, [&](std::size_t i) { return radius[i] - builtRadius_[i]; });
     return 2 * maxDisplacement(positions) + std::max(growth, 0.0) > skin_;
 }
 
 template <int Dim>
-void VerletList<Dim>::rebuild(const std::vector<Vector<Dim>>& positions, const double* radius, bool constantRadius) {
+void VerletList<Dim>::rebuild(const std::vector<Vector<Dim>>& positions, const double* radius,
+                              bool constantRadius) {
     const std::size_t n = positions.size();
     if (constantRadius) {
         builtRadius_.assign(n, radius[0]);

@@ -32,7 +32,8 @@ public:
     const NeighbourSearch<Dim>& search() const { return search_; }
 
 private:
-    bool needsRebuild(const std::vector<Vector<Dim>>& positions, const double* radius, bool constantRadius) const;
+    bool needsRebuild(const std::vector<Vector<Dim>>& positions, const double* radius,
+                      bool constantRadius) const;
     void rebuild(const std::vector<Vector<Dim>>& positions, const double* radius, bool constantRadius);
 
     double skin_;

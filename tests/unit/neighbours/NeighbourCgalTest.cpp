@@ -66,8 +66,8 @@ Rows combine(const Rows& gather, PairCriterion criterion) {
             std::set_union(gather[i].begin(), gather[i].end(), transpose[i].begin(), transpose[i].end(),
                            std::back_inserter(rows[i]));
         else
-            std::set_intersection(gather[i].begin(), gather[i].end(), transpose[i].begin(), transpose[i].end(),
-                                  std::back_inserter(rows[i]));
+            std::set_intersection(gather[i].begin(), gather[i].end(), transpose[i].begin(),
+                                  transpose[i].end(), std::back_inserter(rows[i]));
     }
     return rows;
 }
@@ -109,12 +109,18 @@ TYPED_TEST(NeighbourCgal, Lattice) {
 TYPED_TEST(NeighbourCgal, ClusteredCloud) {
     constexpr int Dim = TypeParam::value;
     const std::size_t n = 10000;
-    expectMatchesCgal<Dim>(clusteredCloud<Dim>(n, 54), variableRadii(n, Dim == 1 ? 1e-4 : Dim == 2 ? 0.002 : 0.006, 55));
+    expectMatchesCgal<Dim>(clusteredCloud<Dim>(n, 54), variableRadii(n,
+                                                                     Dim == 1   ? 1e-4
+                                                                     : Dim == 2 ? 0.002
+                                                                                : 0.006,
+                                                                     55));
 }
 
 #else
 
-TEST(NeighbourCgal, NotAvailable) { GTEST_SKIP() << "built without CGAL"; }
+TEST(NeighbourCgal, NotAvailable) {
+    GTEST_SKIP() << "built without CGAL";
+}
 
 #endif
 

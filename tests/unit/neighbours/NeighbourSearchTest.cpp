@@ -7,8 +7,8 @@
 #include <omp.h>
 
 #include <cmath>
-#include <numeric>
 #include <numbers>
+#include <numeric>
 #include <type_traits>
 
 namespace mfdyn::test {

@@ -75,22 +75,25 @@ inline std::vector<double> variableRadii(std::size_t n, double base, unsigned se
 }
 
 template <int Dim>
-bool pairMatches(const NeighbourDomain<Dim>& domain, const std::vector<Vector<Dim>>& x, const std::vector<double>& r,
-                 std::size_t i, std::size_t j, PairCriterion criterion) {
+bool pairMatches(const NeighbourDomain<Dim>& domain, const std::vector<Vector<Dim>>& x,
+                 const std::vector<double>& r, std::size_t i, std::size_t j, PairCriterion criterion) {
     const double d2 = domain.separation(x[i], x[j]).squaredNorm();
     const double ri2 = r[i] * r[i], rj2 = r[j] * r[j];
     switch (criterion) {
-        case PairCriterion::either: return d2 < ri2 || d2 < rj2;
-        case PairCriterion::both: return d2 < ri2 && d2 < rj2;
-        case PairCriterion::gather: return d2 < ri2;
+        case PairCriterion::either:
+            return d2 < ri2 || d2 < rj2;
+        case PairCriterion::both:
+            return d2 < ri2 && d2 < rj2;
+        case PairCriterion::gather:
+            return d2 < ri2;
     }
     return false;
 }
 
 // Every pair checked, rows by increasing index.
 template <int Dim>
-Rows bruteForce(const NeighbourDomain<Dim>& domain, const std::vector<Vector<Dim>>& x, const std::vector<double>& r,
-                PairCriterion criterion, bool includeSelf) {
+Rows bruteForce(const NeighbourDomain<Dim>& domain, const std::vector<Vector<Dim>>& x,
+                const std::vector<double>& r, PairCriterion criterion, bool includeSelf) {
     Rows rows(x.size());
     for (std::size_t i = 0; i < x.size(); ++i)
         for (std::size_t j = 0; j < x.size(); ++j)

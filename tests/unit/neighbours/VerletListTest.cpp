@@ -18,7 +18,8 @@ void expectCandidatesContainNeighbours(const VerletList<Dim>& verlet, const Neig
     const Rows candidates = sortedRows(verlet.candidates());
     ASSERT_EQ(candidates.size(), truth.size());
     for (std::size_t i = 0; i < truth.size(); ++i)
-        ASSERT_TRUE(std::includes(candidates[i].begin(), candidates[i].end(), truth[i].begin(), truth[i].end()))
+        ASSERT_TRUE(
+            std::includes(candidates[i].begin(), candidates[i].end(), truth[i].begin(), truth[i].end()))
             << "row " << i;
 }
 
