@@ -8,15 +8,16 @@
 
 namespace mfdyn {
 
-const RegistryItem* RegistryFamily::find(std::string_view type) const {
+const RegistryItem* RegistryFamily::find(std::string_view type, std::string_view signature) const {
     for (const auto& item : items)
-        if (item.name == type) return &item;
+        if (item.name == type && (signature.empty() || item.signature == signature)) return &item;
     return nullptr;
 }
 
 std::vector<std::string> RegistryFamily::names() const {
     std::vector<std::string> out;
-    for (const auto& item : items) out.push_back(item.name);
+    for (const auto& item : items)
+        if (out.empty() || out.back() != item.name) out.push_back(item.name);
     return out;
 }
 
@@ -33,7 +34,9 @@ std::string RegistryFamily::validTypes() const {
         s << "\n    no " << name << " types are registered (is the library that provides them loaded with libs (...)?)";
     } else {
         s << "\n    valid " << name << " types:";
-        for (const auto& item : items) s << "\n        " << item.name << "  (" << item.library << ")";
+        for (std::size_t k = 0; k < items.size(); ++k)
+            if (k == 0 || items[k].name != items[k - 1].name)
+                s << "\n        " << items[k].name << "  (" << items[k].library << ")";
     }
     return s.str();
 }
@@ -66,15 +69,15 @@ std::vector<const RegistryFamily*> RegistryIndex::families() const {
 
 void RegistryIndex::add(std::string_view familyName, RegistryItem item) {
     RegistryFamily& fam = family(familyName);
-    if (const RegistryItem* existing = fam.find(item.name)) {
+    if (const RegistryItem* existing = fam.find(item.name, item.signature)) {
         // Static initialisers cannot throw usefully: remember the clash and report it before
         // anything is selected (checkConflicts).
         fam.conflicts.push_back(fam.name + " type '" + item.name + "' is registered twice: by " +
                                 existing->library + " and by " + item.library);
         return;
     }
-    auto pos = std::lower_bound(fam.items.begin(), fam.items.end(), item.name,
-                                [](const RegistryItem& a, const std::string& n) { return a.name < n; });
+    auto pos = std::upper_bound(fam.items.begin(), fam.items.end(), item.name,
+                                [](const std::string& n, const RegistryItem& a) { return n < a.name; });
     fam.items.insert(pos, std::move(item));
 }
 
@@ -91,7 +94,9 @@ std::string RegistryIndex::listing() const {
         s << fam->name << "\n";
         std::size_t width = 0;
         for (const auto& item : fam->items) width = std::max(width, item.name.size());
-        for (const auto& item : fam->items) {
+        for (std::size_t k = 0; k < fam->items.size(); ++k) {
+            const RegistryItem& item = fam->items[k];
+            if (k > 0 && fam->items[k - 1].name == item.name) continue;  // one line for all dimensions
             s << "    " << item.name << std::string(width + 2 - item.name.size(), ' ') << item.description;
             if (item.library.rfind("libmfdyn_", 0) != 0) s << "  [" << item.library << "]";
             s << "\n";

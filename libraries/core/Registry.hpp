@@ -18,6 +18,7 @@
 #include "core/Dictionary.hpp"
 
 #include <functional>
+#include <typeinfo>
 #include <memory>
 #include <string>
 #include <vector>
@@ -29,6 +30,9 @@ struct RegistryItem {
     std::string description;
     std::string library;               // shared object or executable that registered it
     std::shared_ptr<const void> make;  // std::function<std::unique_ptr<Base>(Args...)>
+    // typeid name of the factory: a family templated on the dimension (Strength<Dim>) keeps one
+    // item per name and dimension under one family name.
+    std::string signature;
 };
 
 struct RegistryFamily {
@@ -36,7 +40,8 @@ struct RegistryFamily {
     std::vector<RegistryItem> items;  // sorted by name
     std::vector<std::string> conflicts;
 
-    const RegistryItem* find(std::string_view type) const;
+    const RegistryItem* find(std::string_view type, std::string_view signature = {}) const;
+    // Type names, each once, sorted.
     std::vector<std::string> names() const;
     // "unknown equationOfState type 'mieGrunesen'; did you mean 'mieGruneisen'? Valid types: ..."
     std::string unknownTypeMessage(std::string_view type) const;
@@ -72,7 +77,7 @@ public:
                     const void* registrant) {
         RegistryIndex::global().add(Base::familyName,
             RegistryItem{name, description, sharedObjectOf(registrant),
-                         std::make_shared<const Factory>(std::move(make))});
+                         std::make_shared<const Factory>(std::move(make)), typeid(Factory).name()});
     }
 
     // Select by the `type` entry of `dict`, which is passed on as the first constructor argument
@@ -90,7 +95,7 @@ public:
     static std::unique_ptr<Base> NewOfType(const std::string& type, const Dictionary& context, Args... args) {
         RegistryIndex::global().checkConflicts();
         const RegistryFamily& fam = RegistryIndex::global().family(Base::familyName);
-        const RegistryItem* item = fam.find(type);
+        const RegistryItem* item = fam.find(type, typeid(Factory).name());
         if (!item) {
             if (context.found("type")) throw context.error("type", fam.unknownTypeMessage(type));
             throw InputError(context.where(), context.scope(), fam.unknownTypeMessage(type));
@@ -123,5 +128,16 @@ private:
 #define MFDYN_CONCAT(a, b) MFDYN_CONCAT_IMPL(a, b)
 #define MFDYN_REGISTER(Base, Derived, name, description) \
     static const ::mfdyn::Registration<Base, Derived> MFDYN_CONCAT(mfdynRegistration_, __LINE__) { name, description }
+
+// For families templated on the space dimension (template <int Dim> class Strength): registers
+// Derived<1>, <2>, <3> under one name.
+#define MFDYN_REGISTER_DIM(Base, Derived, name, description)                                              \
+    static const ::mfdyn::Registration<Base<1>, Derived<1>> MFDYN_CONCAT(mfdynRegistration1_, __LINE__){  \
+        name, description};                                                                               \
+    static const ::mfdyn::Registration<Base<2>, Derived<2>> MFDYN_CONCAT(mfdynRegistration2_, __LINE__){  \
+        name, description};                                                                               \
+    static const ::mfdyn::Registration<Base<3>, Derived<3>> MFDYN_CONCAT(mfdynRegistration3_, __LINE__) { \
+        name, description                                                                                 \
+    }
 
 }  // namespace mfdyn

@@ -84,3 +84,36 @@ TEST(Registry, DuplicateNameIsFatalNamingBothRegistrants) {
         EXPECT_NE(what.find("libB.so"), std::string::npos) << what;
     }
 }
+
+namespace {
+
+template <int Dim>
+struct Stepper {
+    static constexpr const char* familyName = "stepperForTest";
+    using Selector = Registry<Stepper, const Dictionary&>;
+    explicit Stepper(const Dictionary&) {}
+    virtual ~Stepper() = default;
+    virtual int dimension() const = 0;
+};
+
+template <int Dim>
+struct PlainStepper final : Stepper<Dim> {
+    using Stepper<Dim>::Stepper;
+    int dimension() const override { return Dim; }
+};
+
+MFDYN_REGISTER_DIM(Stepper, PlainStepper, "plain", "a family templated on the dimension");
+
+}  // namespace
+
+TEST(Registry, DimensionTemplatedFamilyHasOneNameAndAnInstancePerDimension) {
+    const Dictionary dict = Dictionary::parse("type plain;", "dict");
+    EXPECT_EQ(Stepper<1>::Selector::New(dict)->dimension(), 1);
+    EXPECT_EQ(Stepper<2>::Selector::New(dict)->dimension(), 2);
+    EXPECT_EQ(Stepper<3>::Selector::New(dict)->dimension(), 3);
+    EXPECT_EQ(Stepper<3>::Selector::names(), std::vector<std::string>{"plain"});
+    RegistryIndex::global().checkConflicts();  // three registrations of one name are no clash
+    const std::string listing = RegistryIndex::global().listing();
+    const auto first = listing.find("a family templated on the dimension");
+    EXPECT_EQ(listing.find("a family templated on the dimension", first + 1), std::string::npos) << listing;
+}
