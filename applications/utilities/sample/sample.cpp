@@ -1,0 +1,194 @@
+// sample: particle fields along lines and at points, from the written time directories.
+//
+//     sample [-case dir] [-latestTime | -time 0.25 | -time 0.1:0.5]
+//
+// reads system/sampleDict
+//
+//     interpolation mls;                  // shepard | mls (Interpolation.hpp)
+//     kernel { type wendlandC2; }
+//     h 0.02;                             // else the particles' smoothingLength field
+//     fields (density velocity);
+//     sets
+//     {
+//         centreline { type line; start (0 0.5 0); end (1 0.5 0); nPoints 101; }
+//         gauges     { type points; points ((0.1 0.5 0) (0.9 0.5 0)); }
+//     }
+//     plot yes;                           // a PNG per line set with gnuplot, when installed
+//
+// and for each chosen time writes postProcessing/sample/<time>/<set>.csv: distance (line) or
+// index (points), x, y, z, then each field's components (velocity_x, velocity_y, ...). Points
+// beyond every particle's support get NaN and a warning; with mls, points whose neighbours do
+// not span the dimension get the Shepard value and a warning.
+#include "core/Application.hpp"
+#include "core/Case.hpp"
+#include "core/Error.hpp"
+#include "functionObjects/CsvFile.hpp"
+#include "functionObjects/Interpolation.hpp"
+#include "functionObjects/SamplingSet.hpp"
+#include "particles/ParticleSetBase.hpp"
+#include "particles/TimeDirectory.hpp"
+#include "particles/VtpReader.hpp"
+
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+
+using namespace mfdyn;
+
+namespace {
+
+// The times chosen on the command line: all, the latest, one value, or a range a:b (either
+// end may be left open).
+std::vector<TimeDirectory> chosenTimes(const Arguments& args, const Case& runCase) {
+    if (args.has("time") && args.has("latestTime")) throw InputError("give -time or -latestTime, not both");
+    const auto all = runCase.timeDirectories();
+    if (all.empty()) throw InputError("no time directories in case '" + runCase.root().string() + "'");
+    if (args.has("latestTime")) return {all.back()};
+    const auto spec = args.find("time");
+    if (!spec) return all;
+    const auto number = [&](const std::string& text, double fallback) {
+        if (text.empty()) return fallback;
+        std::size_t used = 0;
+        double v = 0;
+        try {
+            v = std::stod(text, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != text.size()) throw InputError("-time '" + *spec + "': '" + text + "' is not a number");
+        return v;
+    };
+    std::vector<TimeDirectory> chosen;
+    if (const auto colon = spec->find(':'); colon != std::string::npos) {
+        const double lo = number(spec->substr(0, colon), -HUGE_VAL),
+                     hi = number(spec->substr(colon + 1), HUGE_VAL);
+        // A relative tolerance, so that 0.1:0.3 includes the directory written as 0.30000000000000004.
+        const auto tol = [](double t) { return 1e-12 * std::max(1.0, std::abs(t)); };
+        for (const auto& t : all)
+            if (t.value >= lo - tol(lo) && t.value <= hi + tol(hi)) chosen.push_back(t);
+    } else if (auto t = runCase.findTime(number(*spec, 0.0))) {
+        chosen.push_back(*t);
+    }
+    if (chosen.empty()) {
+        std::string have;
+        for (const auto& t : all) have += " " + t.name;
+        throw InputError("-time " + *spec + " matches no time directory; there are:" + have);
+    }
+    return chosen;
+}
+
+std::vector<std::string> columnNames(const FieldBase& f) {
+    std::vector<std::string> names;
+    for (const auto& c : componentNames(f.kind(), f.dimension()))
+        names.push_back(c.empty() || f.components() == 1 ? f.name() : f.name() + "_" + c);
+    return names;
+}
+
+// A gnuplot script drawing every field column against distance, one PNG per set.
+void plot(const std::filesystem::path& csv, const std::vector<std::string>& columns) {
+    const auto png = std::filesystem::path(csv).replace_extension(".png");
+    const auto script = std::filesystem::path(csv).replace_extension(".gnuplot");
+    {
+        std::ofstream out(script);
+        out << "set terminal pngcairo size 900,600 noenhanced\nset output '" << png.string() << "'\n"
+            << "set datafile separator ','\nset key autotitle columnhead outside\nset grid\n"
+            << "set xlabel 'distance [m]'\nplot";
+        for (std::size_t c = 4; c < columns.size(); ++c)
+            out << (c > 4 ? "," : "") << " '" << csv.string() << "' using 1:" << c + 1 << " with linespoints";
+        out << "\n";
+    }
+    const std::string command = "gnuplot '" + script.string() + "' > /dev/null 2>&1";
+    if (std::system(command.c_str()) != 0)
+        std::cerr << "Warning: gnuplot failed on " << script.string() << "; no plot\n";
+    else
+        std::cout << "    plot " << png.string() << "\n";
+}
+
+int run(const Arguments& args) {
+    const Case runCase(args.caseDir());
+    const Dictionary dict = runCase.readSystem("sampleDict");
+    const auto fields = dict.get<std::vector<std::string>>("fields");
+    if (fields.empty()) throw dict.error("fields", "no fields to sample");
+    std::vector<SamplingSet> sets;
+    const Dictionary& setsDict = dict.subDict("sets");
+    for (const auto& name : setsDict.keys()) {
+        if (!setsDict.isDict(name)) throw setsDict.error(name, "set '" + name + "' is not a dictionary");
+        sets.emplace_back(setsDict.subDict(name), name);
+    }
+    if (sets.empty()) throw dict.error("sets", "no sets to sample");
+    bool plotting = dict.getOrDefault<bool>("plot", false);
+    if (plotting && std::system("command -v gnuplot > /dev/null 2>&1") != 0) {
+        std::cout << "gnuplot not found: no plots\n";
+        plotting = false;
+    }
+
+    for (const auto& time : chosenTimes(args, runCase)) {
+        const auto file = runCase.timeDir(time.name) / particleFileName;
+        const ParticleFile data = readVtp(file);
+        const ParticleSetBase& particles = *data.particles;
+        std::vector<const FieldBase*> chosen;
+        for (const auto& name : fields) {
+            const FieldBase* f = particles.findField(name);
+            if (!f) {
+                std::string have;
+                for (const auto& n : particles.fieldNames()) have += " " + n;
+                std::string message = "no field '" + name + "' in " + file.string() + "; fields:" + have;
+                if (auto g = closestMatch(name, particles.fieldNames()); !g.empty())
+                    message += " (did you mean '" + g + "'?)";
+                throw dict.error("fields", message);
+            }
+            chosen.push_back(f);
+        }
+        const Interpolation interpolation(dict, particles);
+        std::cout << "time " << time.name << ": " << particles.size() << " particles, "
+                  << Interpolation::methodName(interpolation.method()) << " interpolation\n";
+        for (const auto& set : sets) {
+            const auto stencils = interpolation.stencils(set.points());
+            std::vector<std::string> columns{set.coordinateName(), "x", "y", "z"};
+            std::vector<std::vector<std::vector<double>>> values;
+            for (const FieldBase* f : chosen) {
+                for (const auto& c : columnNames(*f)) columns.push_back(c);
+                values.push_back(Interpolation::apply(stencils, *f));
+            }
+            std::size_t empty = 0, fallback = 0;
+            for (const auto& s : stencils) {
+                empty += s.status == Interpolation::Status::noNeighbours;
+                fallback += s.status == Interpolation::Status::shepardFallback;
+            }
+            const auto csvPath = runCase.postProcessing() / "sample" / time.name / (set.name() + ".csv");
+            {
+                CsvFile csv(csvPath, columns);
+                for (std::size_t p = 0; p < stencils.size(); ++p) {
+                    std::vector<double> row{set.coordinate()[p], set.points()[p][0], set.points()[p][1],
+                                            set.points()[p][2]};
+                    for (const auto& v : values) row.insert(row.end(), v[p].begin(), v[p].end());
+                    csv.row(row);
+                }
+            }
+            std::cout << "    " << set.name() << ": " << stencils.size() << " points -> " << csvPath.string()
+                      << "\n";
+            if (empty)
+                std::cerr << "Warning: set '" << set.name() << "': " << empty
+                          << " points have no particle within reach; their values are NaN\n";
+            if (fallback)
+                std::cerr << "Warning: set '" << set.name() << "': at " << fallback
+                          << " points the neighbours do not span the dimension; Shepard values used\n";
+            if (plotting && set.type() == SamplingSet::Type::line) plot(csvPath, columns);
+        }
+    }
+    for (const auto& u : dict.unusedEntries())
+        std::cerr << "Warning: " << u.scopedKey << " is never read"
+                  << (u.suggestion.empty() ? "" : " (did you mean '" + u.suggestion + "'?)") << "\n";
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    const ApplicationInfo info{"sample",
+                               "Particle fields interpolated along lines and at points (system/sampleDict).",
+                               {{"time", "t|a:b", "the time, or range of times, to sample (default: all)"},
+                                {"latestTime", "", "sample the latest time only"}},
+                               {}};
+    return runApplication(argc, argv, info, run);
+}

@@ -1,0 +1,228 @@
+// Particle-to-point interpolation.
+//
+// With w_j(x) = V_j W(|x - x_j|, h_j) (scatter form: each particle carries its own h) over the
+// particles whose support contains x:
+//
+// shepard (Shepard 1968; the normalised SPH sum, e.g. Monaghan 2005 Rep. Prog. Phys. 68, sec. 2):
+//
+//     f(x) = sum_j w_j f_j / sum_j w_j,     phi_j = w_j / sum_k w_k.
+//
+//   Exact for constants at any particle arrangement. For a linear field the error is
+//   grad f . sum_j phi_j (x_j - x), the offset of the weighted centroid from x: zero on a
+//   lattice symmetric about x, and O(h^2) relative on a smoothly perturbed one well inside
+//   the particles; of order h near a boundary, where the neighbours lie on one side.
+//
+// mls, first order (Lancaster & Salkauskas 1981; Belytschko et al. 1996, Comput. Methods Appl.
+// Mech. Eng. 139, eqs. 2.1-2.10): fit f(y) ~ a + b.(y - x) minimising sum_j w_j (a + b.(x_j - x)
+// - f_j)^2, and take f(x) = a. With p_j = (1, (x_j - x)/H) (H the largest support radius, so
+// that M is well scaled), the normal equations are
+//
+//     M c = sum_j w_j p_j f_j,   M = sum_j w_j p_j p_j^T    ((d+1) x (d+1), symmetric),
+//
+//   and a = c_0 = e_0^T M^-1 sum_j w_j p_j f_j, so phi_j = w_j z . p_j with M z = e_0, one solve
+//   per point whatever the number of fields. Any linear field is reproduced exactly (to
+//   round-off) wherever M is invertible, i.e. the neighbours span d dimensions; where they do
+//   not (fewer than d+1 neighbours, or all on one line in 2D), the point falls back to Shepard
+//   and is flagged.
+//
+// Volumes V_j: mass/density when both fields exist, else a `volume` field, else one common
+// volume (spacing^d on a uniform lattice), whose value cancels from both normalised forms.
+#include "functionObjects/Interpolation.hpp"
+
+#include "core/Error.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace mfdyn {
+
+namespace {
+// Cell indices are packed 21 bits per axis, offset so that negatives fit.
+constexpr std::int64_t cellBits = 21;
+constexpr std::int64_t cellOffset = std::int64_t(1) << (cellBits - 1);
+constexpr std::int64_t cellLimit = cellOffset - 2;
+
+// Below this reciprocal condition number of the scaled moment matrix the linear fit is treated
+// as undetermined: its entries are O(1) after scaling by H, so 1e-10 leaves many digits for
+// the solve while still catching neighbours that are (nearly) collinear.
+constexpr double minReciprocalCondition = 1e-10;
+
+using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>;
+using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1>;
+}  // namespace
+
+std::string Interpolation::methodName(Method method) {
+    return method == Method::mls ? "mls" : "shepard";
+}
+
+Interpolation::Interpolation(const Dictionary& dict, const FieldStore& particles)
+    : particles_(particles), dim_(particles.dimension()) {
+    const std::string method = dict.getOrDefault<std::string>("interpolation", "shepard");
+    if (method == "shepard")
+        method_ = Method::shepard;
+    else if (method == "mls")
+        method_ = Method::mls;
+    else
+        throw dict.error("interpolation",
+                         "'" + method + "' is not an interpolation; valid choices: shepard | mls");
+
+    if (const Dictionary* k = dict.findDict("kernel")) {
+        kernel_ = Kernel::New(*k);
+    } else {
+        Dictionary fallback("kernel");
+        fallback.set("type", "wendlandC2");
+        kernel_ = Kernel::New(fallback);
+    }
+
+    const std::size_t n = particles.size();
+    const FieldBase* position = particles.findField("position");
+    if (!position) throw Error("interpolation: the particles have no position field");
+    position_.assign(n, SamplePoint{0.0, 0.0, 0.0});
+    for (std::size_t i = 0; i < n; ++i)
+        for (int c = 0; c < dim_; ++c) position_[i][c] = position->component(i, c);
+
+    if (auto h = dict.getOptional<double>("h")) {
+        if (!(*h > 0.0)) throw dict.error("h", "the smoothing length must be positive");
+        h_.assign(n, *h);
+    } else if (const FieldBase* f = particles.findField("smoothingLength")) {
+        h_.resize(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            h_[i] = f->component(i, 0);
+            if (!(h_[i] > 0.0))
+                throw Error("interpolation: smoothingLength of particle " + std::to_string(i) + " is " +
+                            std::to_string(h_[i]) + ", not positive");
+        }
+    } else {
+        throw dict.error("h", "give the smoothing length `h`: the particles have no smoothingLength field");
+    }
+
+    volume_.assign(n, 1.0);
+    const FieldBase* mass = particles.findField("mass");
+    const FieldBase* density = particles.findField("density");
+    if (mass && density) {
+        for (std::size_t i = 0; i < n; ++i) volume_[i] = mass->component(i, 0) / density->component(i, 0);
+    } else if (const FieldBase* v = particles.findField("volume")) {
+        for (std::size_t i = 0; i < n; ++i) volume_[i] = v->component(i, 0);
+    }
+
+    for (double h : h_) maxSupport_ = std::max(maxSupport_, kernel_->supportRadius(h));
+    if (n == 0) return;
+    origin_ = position_[0];
+    for (const auto& x : position_)
+        for (int c = 0; c < 3; ++c) origin_[c] = std::min(origin_[c], x[c]);
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto cell = cellOf(position_[i]);
+        for (int c = 0; c < 3; ++c)
+            if (cell[c] > cellLimit)
+                throw Error("interpolation: the particles span more than 2^20 support radii; h is too small");
+        cells_[key(cell)].push_back(i);
+    }
+}
+
+Interpolation::~Interpolation() = default;
+
+Interpolation::CellKey Interpolation::key(const std::array<std::int64_t, 3>& cell) const {
+    return ((cell[0] + cellOffset) << (2 * cellBits)) | ((cell[1] + cellOffset) << cellBits) |
+           (cell[2] + cellOffset);
+}
+
+std::array<std::int64_t, 3> Interpolation::cellOf(const SamplePoint& x) const {
+    std::array<std::int64_t, 3> cell{0, 0, 0};
+    for (int c = 0; c < dim_; ++c) {
+        // Clamped so that far-away points give an out-of-range cell rather than an overflow.
+        const double t = std::floor((x[c] - origin_[c]) / maxSupport_);
+        cell[c] = std::int64_t(std::clamp(t, -double(cellOffset), double(cellOffset)));
+    }
+    return cell;
+}
+
+Interpolation::Stencil Interpolation::stencil(const SamplePoint& point) const {
+    Stencil s;
+    if (cells_.empty()) return s;
+    SamplePoint x{0.0, 0.0, 0.0};
+    for (int c = 0; c < dim_; ++c) x[c] = point[c];
+    const auto centre = cellOf(x);
+    for (int c = 0; c < dim_; ++c)
+        if (centre[c] < -2 || centre[c] > cellLimit) return s;  // beyond every particle's support
+
+    const int reach[3] = {1, dim_ > 1 ? 1 : 0, dim_ > 2 ? 1 : 0};
+    for (int a = -reach[0]; a <= reach[0]; ++a)
+        for (int b = -reach[1]; b <= reach[1]; ++b)
+            for (int c = -reach[2]; c <= reach[2]; ++c) {
+                auto it = cells_.find(key({centre[0] + a, centre[1] + b, centre[2] + c}));
+                if (it == cells_.end()) continue;
+                for (std::size_t j : it->second) {
+                    double r2 = 0.0;
+                    for (int k = 0; k < dim_; ++k) r2 += (position_[j][k] - x[k]) * (position_[j][k] - x[k]);
+                    const double r = std::sqrt(r2);
+                    if (r >= kernel_->supportRadius(h_[j])) continue;
+                    const double w = volume_[j] * kernel_->W(r, h_[j], dim_);
+                    if (w <= 0.0) continue;
+                    s.particles.push_back(j);
+                    s.weights.push_back(w);
+                }
+            }
+    if (s.particles.empty()) return s;
+
+    double sum = 0.0;
+    for (double w : s.weights) sum += w;
+
+    if (method_ == Method::mls) {
+        const int m = dim_ + 1;
+        SmallMatrix M = SmallMatrix::Zero(m, m);
+        SmallVector p(m);
+        auto basis = [&](std::size_t j) {
+            p(0) = 1.0;
+            for (int k = 0; k < dim_; ++k) p(k + 1) = (position_[j][k] - x[k]) / maxSupport_;
+        };
+        // Normalising the weights by their sum leaves phi unchanged and keeps M of order one.
+        for (std::size_t q = 0; q < s.particles.size(); ++q) {
+            basis(s.particles[q]);
+            M.noalias() += (s.weights[q] / sum) * p * p.transpose();
+        }
+        Eigen::SelfAdjointEigenSolver<SmallMatrix> eigen(M);
+        const auto& lambda = eigen.eigenvalues();  // ascending
+        if (eigen.info() == Eigen::Success && lambda(0) > minReciprocalCondition * lambda(m - 1)) {
+            SmallVector e0 = SmallVector::Zero(m);
+            e0(0) = 1.0;
+            const SmallVector z = M.ldlt().solve(e0);
+            for (std::size_t q = 0; q < s.particles.size(); ++q) {
+                basis(s.particles[q]);
+                s.weights[q] = (s.weights[q] / sum) * z.dot(p);
+            }
+            s.status = Status::ok;
+            return s;
+        }
+        s.status = Status::shepardFallback;
+    } else {
+        s.status = Status::ok;
+    }
+    for (double& w : s.weights) w /= sum;
+    return s;
+}
+
+std::vector<Interpolation::Stencil> Interpolation::stencils(const std::vector<SamplePoint>& points) const {
+    std::vector<Stencil> out(points.size());
+    for (std::size_t p = 0; p < points.size(); ++p) out[p] = stencil(points[p]);
+    return out;
+}
+
+std::vector<std::vector<double>> Interpolation::apply(const std::vector<Stencil>& stencils,
+                                                      const FieldBase& field) {
+    const int nc = field.components();
+    std::vector<std::vector<double>> out(stencils.size(), std::vector<double>(nc, 0.0));
+    for (std::size_t p = 0; p < stencils.size(); ++p) {
+        const Stencil& s = stencils[p];
+        if (s.status == Status::noNeighbours) {
+            std::fill(out[p].begin(), out[p].end(), std::numeric_limits<double>::quiet_NaN());
+            continue;
+        }
+        for (std::size_t q = 0; q < s.particles.size(); ++q)
+            for (int c = 0; c < nc; ++c) out[p][c] += s.weights[q] * field.component(s.particles[q], c);
+    }
+    return out;
+}
+
+}  // namespace mfdyn

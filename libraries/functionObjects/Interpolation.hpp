@@ -1,0 +1,90 @@
+#pragma once
+// Particle fields at arbitrary points: the interpolation that the `sample` utility and the
+// `probes` function object share.
+//
+//     interpolation shepard;            // shepard | mls
+//     kernel { type wendlandC2; }       // any registered kernel (default wendlandC2)
+//     h 0.02;                           // smoothing length; else the particles' smoothingLength field
+//
+//     keyword        meaning                                                   required  default
+//     interpolation  shepard (kernel-weighted average) | mls (first-order MLS)  no        shepard
+//     kernel         kernel sub-dictionary (Kernel.hpp)                        no        wendlandC2
+//     h              smoothing length [m]; overrides a smoothingLength field    no        field
+//
+// Both methods are linear in the particle values, f(x) = sum_j phi_j(x) f_j, so the weights
+// phi_j of a point are found once (one neighbour search, one small solve) and applied to every
+// field and component. Equations and sources are in Interpolation.cpp.
+#include "core/Dictionary.hpp"
+#include "core/Tensor.hpp"
+#include "kernels/Kernel.hpp"
+#include "particles/FieldStore.hpp"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+namespace mfdyn {
+
+// A sample point; components beyond the particle dimension are ignored.
+using SamplePoint = std::array<double, 3>;
+
+class Interpolation {
+public:
+    enum class Method { shepard, mls };
+    // What became of one point.
+    enum class Status {
+        ok,
+        // mls only: the neighbours do not span the dimension (too few, or all on a line), so
+        // the linear fit is undetermined and the Shepard value is used instead.
+        shepardFallback,
+        // No particle within the support: the values are NaN.
+        noNeighbours
+    };
+    struct Stencil {
+        std::vector<std::size_t> particles;
+        std::vector<double> weights;  // phi_j, summing to 1
+        Status status = Status::noNeighbours;
+    };
+
+    // Reads the keywords above from `dict`; `particles` must outlive this object and keep its
+    // positions unchanged while it is used.
+    Interpolation(const Dictionary& dict, const FieldStore& particles);
+    ~Interpolation();
+
+    Method method() const { return method_; }
+    const Kernel& kernel() const { return *kernel_; }
+
+    // The weights at each point.
+    std::vector<Stencil> stencils(const std::vector<SamplePoint>& points) const;
+    Stencil stencil(const SamplePoint& point) const;
+    // Every component of `field` at every point: value[point][component]; NaN where the point
+    // has no neighbours.
+    static std::vector<std::vector<double>> apply(const std::vector<Stencil>& stencils,
+                                                  const FieldBase& field);
+
+    // "shepard", "mls".
+    static std::string methodName(Method method);
+
+private:
+    using CellKey = std::int64_t;
+    CellKey key(const std::array<std::int64_t, 3>& cell) const;
+    std::array<std::int64_t, 3> cellOf(const SamplePoint& x) const;
+
+    const FieldStore& particles_;
+    int dim_;
+    Method method_;
+    std::unique_ptr<Kernel> kernel_;
+    std::vector<SamplePoint> position_;  // zero-padded to 3 components
+    std::vector<double> h_;              // per particle
+    std::vector<double> volume_;         // per particle
+    double maxSupport_ = 0.0;
+    // Cell binning of the particles with cells one largest support radius wide, so that a
+    // point's neighbours lie in its own and the adjacent cells.
+    SamplePoint origin_{};
+    std::unordered_map<CellKey, std::vector<std::size_t>> cells_;
+};
+
+}  // namespace mfdyn
