@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <ctime>
 #include <functional>
 #include <numbers>
 #include <random>
@@ -75,6 +76,7 @@ struct Result {
     std::string method;
     int threads;
     double seconds;
+    double cpuSeconds;  // all threads: on a shared machine the fairer measure of the work done
 };
 
 }  // namespace
@@ -113,12 +115,16 @@ int main(int argc, char** argv) {
     std::vector<Result> results;
     auto run = [&](const std::string& method, int threads, const std::function<NeighbourList()>& build) {
         omp_set_num_threads(threads);
-        double best = 1e300;
+        double best = 1e300, bestCpu = 1e300;
         NeighbourList list;
-        for (int r = 0; r < repeats; ++r) best = std::min(best, seconds([&] { list = build(); }));
-        results.push_back({method, threads, best});
-        std::printf("  %-34s %d thread(s): %.3f s, %.1f neighbours/particle\n", method.c_str(), threads, best,
-                    double(list.pairCount()) / double(n));
+        for (int r = 0; r < repeats; ++r) {
+            const std::clock_t cpuStart = std::clock();
+            best = std::min(best, seconds([&] { list = build(); }));
+            bestCpu = std::min(bestCpu, double(std::clock() - cpuStart) / CLOCKS_PER_SEC);
+        }
+        results.push_back({method, threads, best, bestCpu});
+        std::printf("  %-34s %d thread(s): %.3f s (cpu %.3f s), %.1f neighbours/particle\n", method.c_str(),
+                    threads, best, bestCpu, double(list.pairCount()) / double(n));
         std::fflush(stdout);
         return list;
     };
@@ -144,9 +150,9 @@ int main(int argc, char** argv) {
         kd.push_back(run("CGAL kd-tree", threads, [&] { return kdTreeList(points, radius); }));
 
     NeighbourSearch<3> search;
-    NeighbourSearchOptions unsortedRows;
-    unsortedRows.sortRows = false;
-    NeighbourSearch<3> cellOrderSearch({}, unsortedRows);
+    NeighbourSearchOptions sortedRows;
+    sortedRows.sortRows = true;
+    NeighbourSearch<3> sortingSearch({}, sortedRows);
     NeighbourSearch<3> variableSearch;
     bool allMatch = true;
     std::vector<NeighbourList::Index> sortedOrder;
@@ -157,10 +163,10 @@ int main(int argc, char** argv) {
     }
     for (int threads = 1; threads <= maxThreads; ++threads) {
         const NeighbourList a = run("cell list", threads, [&] { return search.build(x, radius); });
-        allMatch = allMatch && a == kd[0];
+        allMatch = allMatch && equalRows(kd[0], a, nullptr);
         const NeighbourList b =
-            run("cell list, rows in cell order", threads, [&] { return cellOrderSearch.build(x, radius); });
-        allMatch = allMatch && equalRows(kd[0], b, nullptr);
+            run("cell list, rows sorted", threads, [&] { return sortingSearch.build(x, radius); });
+        allMatch = allMatch && b == kd[0];
         const NeighbourList c =
             run("cell list, cell-ordered particles", threads, [&] { return search.build(xSorted, radius); });
         allMatch = allMatch && equalRows(kd[0], c, &sortedOrder);
