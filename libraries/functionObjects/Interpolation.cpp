@@ -76,17 +76,24 @@ Interpolation::Interpolation(const Dictionary& dict, const FieldStore& particles
         kernel_ = Kernel::New(fallback);
     }
 
-    const std::size_t n = particles.size();
-    const FieldBase* position = particles.findField("position");
+    hKeyword_ = dict.getOptional<double>("h");
+    if (hKeyword_ && !(*hKeyword_ > 0.0)) throw dict.error("h", "the smoothing length must be positive");
+    if (!hKeyword_ && !particles.findField("smoothingLength"))
+        throw dict.error("h", "give the smoothing length `h`: the particles have no smoothingLength field");
+    update();
+}
+
+void Interpolation::update() {
+    const std::size_t n = particles_.size();
+    const FieldBase* position = particles_.findField("position");
     if (!position) throw Error("interpolation: the particles have no position field");
     position_.assign(n, SamplePoint{0.0, 0.0, 0.0});
     for (std::size_t i = 0; i < n; ++i)
         for (int c = 0; c < dim_; ++c) position_[i][c] = position->component(i, c);
 
-    if (auto h = dict.getOptional<double>("h")) {
-        if (!(*h > 0.0)) throw dict.error("h", "the smoothing length must be positive");
-        h_.assign(n, *h);
-    } else if (const FieldBase* f = particles.findField("smoothingLength")) {
+    if (hKeyword_) {
+        h_.assign(n, *hKeyword_);
+    } else if (const FieldBase* f = particles_.findField("smoothingLength")) {
         h_.resize(n);
         for (std::size_t i = 0; i < n; ++i) {
             h_[i] = f->component(i, 0);
@@ -95,18 +102,20 @@ Interpolation::Interpolation(const Dictionary& dict, const FieldStore& particles
                             std::to_string(h_[i]) + ", not positive");
         }
     } else {
-        throw dict.error("h", "give the smoothing length `h`: the particles have no smoothingLength field");
+        throw Error("interpolation: the particles have lost their smoothingLength field");
     }
 
     volume_.assign(n, 1.0);
-    const FieldBase* mass = particles.findField("mass");
-    const FieldBase* density = particles.findField("density");
+    const FieldBase* mass = particles_.findField("mass");
+    const FieldBase* density = particles_.findField("density");
     if (mass && density) {
         for (std::size_t i = 0; i < n; ++i) volume_[i] = mass->component(i, 0) / density->component(i, 0);
-    } else if (const FieldBase* v = particles.findField("volume")) {
+    } else if (const FieldBase* v = particles_.findField("volume")) {
         for (std::size_t i = 0; i < n; ++i) volume_[i] = v->component(i, 0);
     }
 
+    maxSupport_ = 0.0;
+    cells_.clear();
     for (double h : h_) maxSupport_ = std::max(maxSupport_, kernel_->supportRadius(h));
     if (n == 0) return;
     origin_ = position_[0];

@@ -22,6 +22,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -49,10 +50,13 @@ public:
         Status status = Status::noNeighbours;
     };
 
-    // Reads the keywords above from `dict`; `particles` must outlive this object and keep its
-    // positions unchanged while it is used.
+    // Reads the keywords above from `dict`; `particles` must outlive this object. Positions,
+    // smoothing lengths and volumes are taken now and at each update().
     Interpolation(const Dictionary& dict, const FieldStore& particles);
     ~Interpolation();
+    // After the particles moved (or changed in number): read them again and re-bin, keeping
+    // the kernel, whose tables are costly to build.
+    void update();
 
     Method method() const { return method_; }
     const Kernel& kernel() const { return *kernel_; }
@@ -77,6 +81,7 @@ private:
     int dim_;
     Method method_;
     std::unique_ptr<Kernel> kernel_;
+    std::optional<double> hKeyword_;
     std::vector<SamplePoint> position_;  // zero-padded to 3 components
     std::vector<double> h_;              // per particle
     std::vector<double> volume_;         // per particle

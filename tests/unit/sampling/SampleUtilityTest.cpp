@@ -45,11 +45,12 @@ protected:
         writeTimeDirectory(dir_, name, p);
     }
 
-    void writeSampleDict(const std::string& fields) {
+    void writeSampleDict(const std::string& fields, bool plot = false) {
         std::ofstream(dir_ / "system" / "sampleDict")
             << "interpolation mls;\nkernel { type wendlandC2; }\nh 0.065;\nfields (" << fields << ");\n"
             << "sets\n{\n    centreline { type line; start (0.2 0.5 0); end (0.8 0.5 0); nPoints 7; }\n"
-            << "    gauges { type points; points ((0.25 0.75 0) (0.5 0.5 0)); }\n}\n";
+            << "    gauges { type points; points ((0.25 0.75 0) (0.5 0.5 0)); }\n}\n"
+            << "plot " << (plot ? "yes" : "no") << ";\n";
     }
 
     // Runs sample with `options`; returns its exit status, with its output in output_.
@@ -92,8 +93,12 @@ protected:
 TEST_F(SampleCase, latestTimeLineAndPoints) {
     writeTime("0", 0.0);
     writeTime("0.5", 0.5);
-    writeSampleDict("density velocity");
+    writeSampleDict("density velocity", true);
     ASSERT_EQ(sample("-latestTime"), 0) << output_;
+    // A plot for the line set only, or a note that gnuplot is missing.
+    const fs::path png = dir_ / "postProcessing" / "sample" / "0.5" / "centreline.png";
+    EXPECT_TRUE(fs::exists(png) || output_.find("gnuplot not found") != std::string::npos) << output_;
+    EXPECT_FALSE(fs::exists(dir_ / "postProcessing" / "sample" / "0.5" / "gauges.png"));
     EXPECT_FALSE(fs::exists(dir_ / "postProcessing" / "sample" / "0"));
 
     const auto line = lines(read(dir_ / "postProcessing" / "sample" / "0.5" / "centreline.csv"));
