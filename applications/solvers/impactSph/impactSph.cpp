@@ -1,0 +1,17 @@
+// impactSph: updated-Lagrangian SPH for shocks and hypervelocity impact through inhomogeneous
+// media (Zisis 2017). See libraries/sph/SphSolver.hpp and tutorials/impactSph/.
+#include "core/Application.hpp"
+#include "solver/SolverRun.hpp"
+#include "sph/SphSolver.hpp"
+
+int main(int argc, char** argv) {
+    const mfdyn::ApplicationInfo info{
+        "impactSph",
+        "Updated-Lagrangian SPH for shocks and impact (constant/sphProperties, constant/materialProperties).",
+        {},
+        {},
+        true};
+    return mfdyn::runApplication(argc, argv, info, [](const mfdyn::Arguments& args) {
+        return mfdyn::runSolver<mfdyn::SphSolver>(args, "impactSph");
+    });
+}

@@ -1,0 +1,111 @@
+#pragma once
+// impactSph: updated-Lagrangian SPH for shocks and impact through inhomogeneous media (Zisis 2017;
+// the method as implemented is ../shared/methods/sph-impact.md). A step, in named phases:
+//
+//     updateNeighbours → computeEquationOfState → computeDensitySums (ω, ñ, ρ by summation)
+//     → computeRates (dρ/dt, dv/dt, de/dt with dissipation) → integrate (leapfrog) → updateSmoothingLength
+//
+// constant/sphProperties:
+//     kernel          { type gaussian; }                        // any registered kernel
+//     densityScheme   { type number; form continuity; gradH yes; }
+//     smoothingLength { type massDensity; eta 1.2; }
+//     dissipation     { type riemann; velocity (1 2); density (0.5 2); energy (0.1 2); }
+//     densityRateLimit 0.2;   // Δt ≤ ξ ρ/|dρ/dt| as well as the Courant limit (0: off)
+//
+// constant/materialProperties:  materials { name { equationOfState { type idealGas; gamma 1.4; } } }
+// Particles carry `material` (an index into the particle file's material names) or, without it,
+// take the material named like their region, or the only material there is.
+//
+// Fields allocated: position, velocity, mass, density, pressure, soundSpeed, smoothingLength,
+// material; specificInternalEnergy only when some equation of state needs it; omega when gradH;
+// numberDensity when the smoothing-length law needs it; the leapfrog's half-step copies.
+#include "kernels/Kernel.hpp"
+#include "kernels/KernelEvaluator.hpp"
+#include "materials/equationOfState/EquationOfState.hpp"
+#include "particles/NeighbourSearch.hpp"
+#include "solver/Solver.hpp"
+#include "sph/DensityScheme.hpp"
+#include "sph/Dissipation.hpp"
+#include "sph/SmoothingLengthLaw.hpp"
+
+#include <memory>
+#include <vector>
+
+namespace mfdyn {
+
+template <int Dim>
+class SphSolver final : public Solver {
+public:
+    explicit SphSolver(SolverRun& run);
+    ~SphSolver() override;
+
+    TimeStepVote stableTimeStep() override;
+    void step(double dt) override;
+    ParticleSetBase& particles() override { return *particles_; }
+    std::optional<double> internalEnergy() const override;
+    std::string solverState() const override;
+    void restoreSolverState(const Dictionary& state) override;
+    std::vector<const Dictionary*> dictionaries() const override { return {&properties_, &materialProperties_}; }
+    std::vector<std::pair<std::string, double>> phaseTimes() const override;
+
+private:
+    struct Material {
+        std::string name;
+        std::unique_ptr<EquationOfState> eos;
+    };
+
+    void readMaterials();
+    void initialiseFields();
+    void ensureRates();
+    void updateNeighbours();
+    void computeEquationOfState();
+    void computeDensitySums();
+    void computeRates();
+    void updateSmoothingLength();
+    void checkState(const char* phase) const;
+
+    std::unique_ptr<ParticleSet<Dim>> owner_;
+    ParticleSet<Dim>* particles_;
+    Dictionary properties_;
+    Dictionary materialProperties_;
+    std::unique_ptr<Kernel> kernel_;
+    KernelEvaluator<Dim> W_;
+    std::unique_ptr<DensityScheme> scheme_;
+    std::unique_ptr<SmoothingLengthLaw> hLaw_;
+    DissipationParameters diss_;
+    double densityRateLimit_;
+    std::vector<Material> materials_;
+    bool needsEnergy_ = false;
+
+    std::vector<Vector<Dim>>& x_;
+    std::vector<Vector<Dim>>& v_;
+    std::vector<double>& m_;
+    std::vector<double>& rho_;
+    std::vector<double>& p_;
+    std::vector<double>& c_;
+    std::vector<double>& h_;
+    std::vector<std::int64_t>& material_;
+    std::vector<double>* e_ = nullptr;
+    std::vector<double>* omega_ = nullptr;
+    std::vector<double>* number_ = nullptr;
+    // Leapfrog half-step state U^{k+1/2} (kept as fields: restart reads them back exactly).
+    std::vector<Vector<Dim>>* vHalf_ = nullptr;
+    std::vector<double>* rhoHalf_ = nullptr;
+    std::vector<double>* eHalf_ = nullptr;
+
+    // Rates f^k and per-particle scheme coefficients (solver scratch, not fields).
+    std::vector<Vector<Dim>> dvdt_;
+    std::vector<double> drhodt_, dedt_, a_, b_, cc_;
+    NeighbourSearch<Dim> search_;
+    NeighbourList neighbours_;
+    bool ratesValid_ = false;
+    bool started_ = false;
+    double previousDeltaT_ = 0;
+    double neighbourSeconds_ = 0, eosSeconds_ = 0, sumSeconds_ = 0, rateSeconds_ = 0, integrateSeconds_ = 0;
+};
+
+extern template class SphSolver<1>;
+extern template class SphSolver<2>;
+extern template class SphSolver<3>;
+
+}  // namespace mfdyn

@@ -1,0 +1,14 @@
+#pragma once
+#include "sph/DensityScheme.hpp"
+
+namespace mfdyn {
+
+class VolumeScheme final : public DensityScheme {
+public:
+    explicit VolumeScheme(const Dictionary& dict);
+    void coefficients(std::size_t n, const double* m, const double* rho, double* a, double* b,
+                      double* c) const override;
+    bool explicitSummation() const override { return false; }
+};
+
+}  // namespace mfdyn
