@@ -199,7 +199,7 @@ void NeighbourSearch<Dim>::gatherRow(std::size_t k, std::vector<Index>& out,
 
     // Cells along x are contiguous in the cell order, so a row of cells is one run of particles
     // (two where a periodic range wraps). Each row is cut to the chord of the query sphere through
-    // it, which leaves in 3D about 60% of the particles of the full box of cells to check.
+    // it, which leaves in 3D about two thirds of the particles of the full box of cells to check.
     const double reach2 = reach * reach;
     runs.clear();
     auto run = [&](Index begin, Index end) { runs.push_back({begin, end}); };
