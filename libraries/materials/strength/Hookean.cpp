@@ -43,7 +43,7 @@ Hookean<Dim>::Hookean(const Dictionary& dict) : Strength<Dim>(dict) {
     const double factor = this->read(dict, shearFactorKey<Dim>);
     if (factor != 1.0 && factor != 2.0)
         throw dict.error("shearFactor",
-                         "expected 2 (standard) or 1 (thesis Eq. 6.7), found " + std::to_string(factor));
+                         "expected 2 (standard) or 1 (thesis Eq. 6.7), found " + this->formatNumber(factor));
     twoMu_ = factor * this->shearModulus_;
     if (this->readWord(dict, "deviator", "dimension", {"dimension", "three"}) == "three") {
         this->deviatorWeight_ = 1.0 / 3.0;

@@ -71,8 +71,8 @@ JohnsonCook<Dim>::JohnsonCook(const Dictionary& dict)
       specificHeat_(this->read(dict, heatKey<Dim>)),
       taylorQuinney_(this->read(dict, betaKey<Dim>)) {
     if (!(meltTemperature_ > roomTemperature_))
-        throw dict.error("Tmelt", "expected Tmelt > Troom = " + std::to_string(roomTemperature_) +
-                                      " K, found " + std::to_string(meltTemperature_) + " K");
+        throw dict.error("Tmelt", "expected Tmelt > Troom = " + this->formatNumber(roomTemperature_) +
+                                      " K, found " + this->formatNumber(meltTemperature_) + " K");
 }
 
 template <int Dim>

@@ -4,6 +4,7 @@
 #include "materials/strength/Strength.hpp"
 
 #include <cmath>
+#include <sstream>
 
 namespace mfdyn {
 
@@ -16,14 +17,26 @@ const Dictionary* holderOf(const Dictionary& dict, std::string_view key) {
     return nullptr;
 }
 
+std::string number(double value) {
+    std::ostringstream out;
+    out.precision(10);
+    out << value;
+    return out.str();
+}
+
 std::string describeBounds(double lower, bool lowerOpen, double upper) {
     std::string s;
-    if (std::isfinite(lower)) s += (lowerOpen ? "> " : ">= ") + std::to_string(lower);
-    if (std::isfinite(upper)) s += (s.empty() ? "<= " : " and <= ") + std::to_string(upper);
+    if (std::isfinite(lower)) s += (lowerOpen ? "> " : ">= ") + number(lower);
+    if (std::isfinite(upper)) s += (s.empty() ? "<= " : " and <= ") + number(upper);
     return s;
 }
 
 }  // namespace
+
+template <int Dim>
+std::string Strength<Dim>::formatNumber(double value) {
+    return number(value);
+}
 
 template <int Dim>
 Strength<Dim>::Strength(const Dictionary& dict) : type_(dict.get<std::string>("type")) {}
@@ -35,7 +48,7 @@ double Strength<Dim>::read(const Dictionary& dict, const Keyword& key) {
     if (!holder) {
         if (key.fallback) {
             dict.noteDefault((dict.scope().empty() ? std::string() : dict.scope() + "/") + key.name + " " +
-                             std::to_string(*key.fallback));
+                             number(*key.fallback));
             return *key.fallback;
         }
         const std::string scope =
@@ -50,7 +63,7 @@ double Strength<Dim>::read(const Dictionary& dict, const Keyword& key) {
     if (below || !(value <= key.upper) || !std::isfinite(value))
         throw holder->error(key.name, "expected " + what + " " +
                                           describeBounds(key.lower, key.lowerOpen, key.upper) + ", found " +
-                                          std::to_string(value));
+                                          number(value));
     return value;
 }
 

@@ -135,6 +135,8 @@ protected:
     static std::string readWord(const Dictionary& dict, const char* key, const std::string& fallback,
                                 const std::vector<std::string>& allowed);
     static bool readSwitch(const Dictionary& dict, const char* key, bool fallback);
+    // A number as a user would write it (0.265e9 as 2.65e+08, not 265000000.000000).
+    static std::string formatNumber(double value);
 
     double shearModulus_ = 0.0;
     double deviatorWeight_ = 1.0 / Dim;
