@@ -1,0 +1,38 @@
+// Ideal gas (Zisis 2017 Eq. 1.14, sph-impact.md 5.1):
+//
+//     P = (gamma - 1) rho e,    c^2 = gamma (gamma - 1) e = gamma P / rho.
+//
+// (c^2 from dP/drho|_e = (gamma - 1) e and dP/de|_rho = (gamma - 1) rho.) Valid for e >= 0; a
+// negative e gives P < 0 and c^2 < 0, which the solver reports.
+//
+//     keyword  meaning                                   unit     required  default
+//     gamma    ratio of specific heats, > 1              -        yes
+//     rho0     reference density (initial conditions)    kg/m^3   no        0 (none)
+#include "materials/equationOfState/IdealGas.hpp"
+
+namespace mfdyn {
+
+IdealGas::IdealGas(const Dictionary& dict)
+    : EquationOfState(dict, parameterOrDefault(dict, "rho0", 0.0)),
+      gamma_(checkAbove(dict, "gamma", parameter(dict, "gamma"), 1.0)) {}
+
+void IdealGas::state(double rho, double e, double& p, double& c2) const {
+    p = (gamma_ - 1.0) * rho * e;
+    c2 = gamma_ * (gamma_ - 1.0) * e;
+}
+
+double IdealGas::pressure(double rho, double e) const {
+    return (gamma_ - 1.0) * rho * e;
+}
+
+double IdealGas::soundSpeedSquared(double, double e) const {
+    return gamma_ * (gamma_ - 1.0) * e;
+}
+
+void IdealGas::evaluate(std::size_t n, const double* rho, const double* e, double* p, double* c) const {
+    evaluateBlock(*this, n, rho, e, p, c);
+}
+
+MFDYN_REGISTER(EquationOfState, IdealGas, "idealGas", "ideal gas P = (gamma - 1) rho e; keyword gamma");
+
+}  // namespace mfdyn

@@ -1,0 +1,22 @@
+#pragma once
+// Ideal gas P = (gamma - 1) rho e. Equations in IdealGas.cpp.
+#include "materials/equationOfState/EquationOfState.hpp"
+
+namespace mfdyn {
+
+class IdealGas final : public EquationOfState {
+public:
+    explicit IdealGas(const Dictionary& dict);
+
+    double pressure(double rho, double e) const override;
+    double soundSpeedSquared(double rho, double e) const override;
+    void evaluate(std::size_t n, const double* rho, const double* e, double* p, double* c) const override;
+
+    // P and c^2 together (shared work); inlined by evaluate().
+    void state(double rho, double e, double& p, double& c2) const;
+
+private:
+    double gamma_;
+};
+
+}  // namespace mfdyn

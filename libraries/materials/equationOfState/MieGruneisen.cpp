@@ -1,0 +1,113 @@
+// Mie-Grueneisen equation of state referenced to the Hugoniot of a linear shock-velocity law
+// (Zisis 2017 Eqs. 6.10-6.13 and 1.9-1.12, sph-impact.md 5.1; the form of Hiermaier 1997 and of
+// the Autodyn "shock" EOS; Meyers 1994, "Dynamic Behavior of Materials", ch. 4-5):
+//
+//     P   = (1 - Gamma0 mu / 2) P_H(mu) + Gamma0 rho e,    mu = rho/rho0 - 1,
+//     Us  = c0 + s up  (s is the note's xi),  A = rho0 c0^2,
+//
+// with, in compression (mu > 0), `hugoniot cubic` (the thesis, default):
+//
+//     P_H = A mu + B mu^2 + C mu^3,  B = A (1 + 2 (s - 1)),  C = A (2 (s - 1) + 3 (s - 1)^2),
+//
+// or `hugoniot linearUsUp`, the Hugoniot itself, of which the cubic is the Taylor expansion to
+// O(mu^3) (from P_H = rho0 c0^2 eta / (1 - s eta)^2, eta = 1 - rho0/rho = mu/(1 + mu)):
+//
+//     P_H = A mu (1 + mu) / (1 - (s - 1) mu)^2,    defined for mu < 1/(s - 1) (NaN beyond),
+//
+// and P_H = A mu in tension (mu <= 0) for both. The Grueneisen term is exact for constant Gamma0:
+// with e_H = P_H (1/rho0 - 1/rho)/2 the Hugoniot energy, Gamma0 rho e_H = Gamma0 mu P_H / 2, so
+// P(rho, e_H) = P_H(mu): with linearUsUp the model reproduces the Hugoniot (P = rho0 Us up at
+// e = up^2/2) to round-off; the cubic deviates from it by (1 - Gamma0 mu/2)(P_cubic - P_H) =
+// O(A (s-1)^3 mu^4) (tests/unit/materials/MieGruenisenTest.cpp).
+//
+// Sound speed, with dP/de|_rho = Gamma0 rho:
+//
+//     c^2 = [(1 - Gamma0 mu/2) P_H'(mu) - Gamma0 P_H / 2] / rho0 + Gamma0 e + Gamma0 P / rho.
+//
+// Limits: no spall or tension cut-off in the thesis; `minimumPressure` clamps P from below
+// (P = max(P, pMin)) and leaves c^2 as the uncut value, since the cut-off models failed material
+// that the time step must still resolve, not a softer one. c^2 can be negative in strong tension.
+//
+//     keyword          meaning                                  unit     required  default
+//     rho0             reference density                        kg/m^3   yes (here or in the material)
+//     c0               bulk sound speed (Us at up = 0)           m/s      yes (here or in the material)
+//     s                Us-up slope (the note's xi)              -        yes (here or in the material)
+//     gamma0           Grueneisen parameter                     -        yes (here or in the material)
+//     hugoniot         cubic | linearUsUp                       -        no        cubic
+//     minimumPressure  tension cut-off pMin (negative)          Pa       no        none (-infinity)
+#include "materials/equationOfState/MieGruneisen.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mfdyn {
+
+MieGruneisen::MieGruneisen(const Dictionary& dict)
+    : EquationOfState(dict, positiveParameter(dict, "rho0")),
+      c0_(positiveParameter(dict, "c0")),
+      s_(parameter(dict, "s")),
+      gamma0_(parameter(dict, "gamma0")) {
+    const auto form = dict.getOrDefault<std::string>("hugoniot", "cubic");
+    if (form == "cubic")
+        hugoniot_ = Hugoniot::cubic;
+    else if (form == "linearUsUp")
+        hugoniot_ = Hugoniot::linearUsUp;
+    else
+        throw dict.error("hugoniot",
+                         "expected 'cubic' (Zisis 2017 Eq. 6.11) or 'linearUsUp' (the exact "
+                         "Hugoniot of Us = c0 + s up), found '" +
+                             form + "'");
+    if (auto pMin = optionalParameter(dict, "minimumPressure")) {
+        if (!(*pMin <= 0.0)) throw parameterError(dict, "minimumPressure", "expected a tension (<= 0) in Pa");
+        pMin_ = *pMin;
+    }
+    const double sm1 = s_ - 1.0;
+    A_ = referenceDensity() * c0_ * c0_;
+    B_ = A_ * (1.0 + 2.0 * sm1);
+    C_ = A_ * (2.0 * sm1 + 3.0 * sm1 * sm1);
+}
+
+void MieGruneisen::state(double rho, double e, double& p, double& c2) const {
+    const double rho0 = referenceDensity();
+    const double mu = rho / rho0 - 1.0;
+    double pH = A_ * mu, dpH = A_;
+    if (mu > 0.0) {
+        if (hugoniot_ == Hugoniot::cubic) {
+            pH = mu * (A_ + mu * (B_ + mu * C_));
+            dpH = A_ + mu * (2.0 * B_ + 3.0 * mu * C_);
+        } else {
+            const double d = 1.0 - (s_ - 1.0) * mu;
+            if (!(d > 0.0)) {
+                p = c2 = std::numeric_limits<double>::quiet_NaN();
+                return;
+            }
+            pH = A_ * mu * (1.0 + mu) / (d * d);
+            dpH = A_ * ((1.0 + 2.0 * mu) / (d * d) + 2.0 * (s_ - 1.0) * mu * (1.0 + mu) / (d * d * d));
+        }
+    }
+    const double f = 1.0 - 0.5 * gamma0_ * mu;
+    const double pUncut = f * pH + gamma0_ * rho * e;
+    c2 = (f * dpH - 0.5 * gamma0_ * pH) / rho0 + gamma0_ * e + gamma0_ * pUncut / rho;
+    p = std::max(pUncut, pMin_);
+}
+
+double MieGruneisen::pressure(double rho, double e) const {
+    double p, c2;
+    state(rho, e, p, c2);
+    return p;
+}
+
+double MieGruneisen::soundSpeedSquared(double rho, double e) const {
+    double p, c2;
+    state(rho, e, p, c2);
+    return c2;
+}
+
+void MieGruneisen::evaluate(std::size_t n, const double* rho, const double* e, double* p, double* c) const {
+    evaluateBlock(*this, n, rho, e, p, c);
+}
+
+MFDYN_REGISTER(EquationOfState, MieGruneisen, "mieGruneisen",
+               "Mie-Grueneisen on a linear Us-up Hugoniot (Zisis 6.10-6.13); keywords rho0, c0, s, gamma0");
+
+}  // namespace mfdyn

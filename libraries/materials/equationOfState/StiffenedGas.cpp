@@ -1,0 +1,43 @@
+// Stiffened gas (Zisis 2017 Eq. 5.3 with the sign of sph-impact.md 12.5: Eq. 1.15's "+" is wrong;
+// Harlow & Amsden 1971, LA-4700; Menikoff & Plohr 1989, Rev. Mod. Phys. 61:75):
+//
+//     P = (gamma - 1) rho e - gamma pRef,    c^2 = gamma (P + pRef) / rho.
+//
+// (dP/drho|_e = (gamma - 1) e, dP/de|_rho = (gamma - 1) rho, and (gamma - 1) rho e = P + gamma pRef.)
+// pRef = 0 is the ideal gas; water-like liquids take gamma ~ 4.4, pRef ~ 6e8 Pa. c^2 > 0 needs
+// P > -pRef.
+//
+//     keyword  meaning                                   unit     required  default
+//     gamma    ratio of specific heats, > 1              -        yes
+//     pRef     stiffening pressure, >= 0                 Pa       yes
+//     rho0     reference density (initial conditions)    kg/m^3   no        0 (none)
+#include "materials/equationOfState/StiffenedGas.hpp"
+
+namespace mfdyn {
+
+StiffenedGas::StiffenedGas(const Dictionary& dict)
+    : EquationOfState(dict, parameterOrDefault(dict, "rho0", 0.0)),
+      gamma_(checkAbove(dict, "gamma", parameter(dict, "gamma"), 1.0)),
+      pRef_(positiveParameter(dict, "pRef", true)) {}
+
+void StiffenedGas::state(double rho, double e, double& p, double& c2) const {
+    p = (gamma_ - 1.0) * rho * e - gamma_ * pRef_;
+    c2 = gamma_ * (p + pRef_) / rho;
+}
+
+double StiffenedGas::pressure(double rho, double e) const {
+    return (gamma_ - 1.0) * rho * e - gamma_ * pRef_;
+}
+
+double StiffenedGas::soundSpeedSquared(double rho, double e) const {
+    return gamma_ * (pressure(rho, e) + pRef_) / rho;
+}
+
+void StiffenedGas::evaluate(std::size_t n, const double* rho, const double* e, double* p, double* c) const {
+    evaluateBlock(*this, n, rho, e, p, c);
+}
+
+MFDYN_REGISTER(EquationOfState, StiffenedGas, "stiffenedGas",
+               "stiffened gas P = (gamma - 1) rho e - gamma pRef; keywords gamma, pRef");
+
+}  // namespace mfdyn

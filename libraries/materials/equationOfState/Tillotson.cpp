@@ -1,0 +1,130 @@
+// Tillotson equation of state (Tillotson 1962, "Metallic equations of state for hypervelocity
+// impact", General Atomic report GA-3216; as written in Melosh 1989, "Impact Cratering", Appendix
+// II, Eqs. AII.1-AII.3, and Brundage 2013, "Implementation of Tillotson Equation of State for
+// Hypervelocity Impact of Metals, Geologic Materials, and Liquids", Procedia Eng. 58:461):
+//
+//     eta = rho/rho0,  mu = eta - 1,  x = rho0/rho - 1,  omega = e/(E0 eta^2) + 1.
+//
+//   compressed, rho >= rho0, or e <= Eiv (cold expanded states):
+//     P_c = (a + b/omega) rho e + A mu + B mu^2
+//   expanded, rho < rho0 and e >= Ecv:
+//     P_e = a rho e + [b rho e/omega + A mu exp(-beta x)] exp(-alpha x^2)
+//   in between, rho < rho0 and Eiv < e < Ecv (Melosh 1989 AII.3, the linear blend in e):
+//     P = [(e - Eiv) P_e + (Ecv - e) P_c] / (Ecv - Eiv).
+//
+// P is continuous everywhere: at e = Eiv and e = Ecv by construction, and at rho = rho0, where
+// x = mu = 0 and both branches reduce to (a + b/omega) rho0 e. Its derivatives jump across these
+// lines.
+//
+// Sound speed: c^2 = dP/drho|_e + (P/rho^2) dP/de|_rho, with both partials analytic per branch
+// (in the blend, dP/de also carries (P_e - P_c)/(Ecv - Eiv)). On a branch line the branch chosen
+// above is used. c^2 may be negative in expanded states (a + b/omega small, the A mu term
+// dominant); it is returned as is and the solver decides.
+//
+// Range: designed for hypervelocity impact (shock pressures of tens to hundreds of GPa and
+// vaporisation); it has no phase transitions and in cold tension P_c is unbounded below, so
+// `minimumPressure` offers the same cut-off as mieGruneisen (P = max(P, pMin), c^2 uncut).
+//
+//     keyword          meaning                                   unit     required  default
+//     rho0             reference density                         kg/m^3   yes (here or in the material)
+//     A                bulk-modulus-like coefficient             Pa       yes
+//     B                second-order coefficient                  Pa       yes
+//     a, b             Tillotson constants (a + b ~ Gruneisen)   -        yes
+//     alpha, beta      expanded-branch decay constants           -        yes
+//     E0               reference specific energy                 J/kg     yes
+//     Eiv              energy of incipient vaporisation          J/kg     yes
+//     Ecv              energy of complete vaporisation, > Eiv    J/kg     yes
+//     minimumPressure  tension cut-off pMin (negative)           Pa       no        none
+#include "materials/equationOfState/Tillotson.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mfdyn {
+
+Tillotson::Tillotson(const Dictionary& dict)
+    : EquationOfState(dict, positiveParameter(dict, "rho0")),
+      A_(positiveParameter(dict, "A")),
+      B_(parameter(dict, "B")),
+      a_(parameter(dict, "a")),
+      b_(parameter(dict, "b")),
+      alpha_(positiveParameter(dict, "alpha", true)),
+      beta_(positiveParameter(dict, "beta", true)),
+      E0_(positiveParameter(dict, "E0")),
+      Eiv_(positiveParameter(dict, "Eiv", true)),
+      Ecv_(checkAbove(dict, "Ecv", parameter(dict, "Ecv"), Eiv_)) {
+    if (auto pMin = optionalParameter(dict, "minimumPressure")) {
+        if (!(*pMin <= 0.0)) throw parameterError(dict, "minimumPressure", "expected a tension (<= 0) in Pa");
+        pMin_ = *pMin;
+    }
+}
+
+void Tillotson::compressed(double rho, double e, double& p, double& pRho, double& pE) const {
+    const double rho0 = referenceDensity();
+    const double eta = rho / rho0, mu = eta - 1.0;
+    const double omega = e / (E0_ * eta * eta) + 1.0;
+    const double omegaRho = -2.0 * e / (E0_ * eta * eta * eta * rho0);
+    const double omegaE = 1.0 / (E0_ * eta * eta);
+    const double g = a_ + b_ / omega;
+    p = g * rho * e + A_ * mu + B_ * mu * mu;
+    pRho = g * e - b_ * rho * e * omegaRho / (omega * omega) + (A_ + 2.0 * B_ * mu) / rho0;
+    pE = g * rho - b_ * rho * e * omegaE / (omega * omega);
+}
+
+void Tillotson::expanded(double rho, double e, double& p, double& pRho, double& pE) const {
+    const double rho0 = referenceDensity();
+    const double eta = rho / rho0, mu = eta - 1.0, x = rho0 / rho - 1.0, xRho = -rho0 / (rho * rho);
+    const double omega = e / (E0_ * eta * eta) + 1.0;
+    const double omegaRho = -2.0 * e / (E0_ * eta * eta * eta * rho0);
+    const double omegaE = 1.0 / (E0_ * eta * eta);
+    const double G = std::exp(-alpha_ * x * x), GRho = -2.0 * alpha_ * x * xRho * G;
+    const double H = std::exp(-beta_ * x), HRho = -beta_ * xRho * H;
+    const double F = b_ * rho * e / omega + A_ * mu * H;
+    const double FRho =
+        b_ * e / omega - b_ * rho * e * omegaRho / (omega * omega) + A_ * H / rho0 + A_ * mu * HRho;
+    const double FE = b_ * rho / omega - b_ * rho * e * omegaE / (omega * omega);
+    p = a_ * rho * e + F * G;
+    pRho = a_ * e + FRho * G + F * GRho;
+    pE = a_ * rho + FE * G;
+}
+
+void Tillotson::state(double rho, double e, double& p, double& c2) const {
+    double pRho, pE;
+    if (rho >= referenceDensity() || e <= Eiv_) {
+        compressed(rho, e, p, pRho, pE);
+    } else if (e >= Ecv_) {
+        expanded(rho, e, p, pRho, pE);
+    } else {
+        double pc, pcRho, pcE, pe, peRho, peE;
+        compressed(rho, e, pc, pcRho, pcE);
+        expanded(rho, e, pe, peRho, peE);
+        const double dE = Ecv_ - Eiv_, w = (e - Eiv_) / dE;
+        p = w * pe + (1.0 - w) * pc;
+        pRho = w * peRho + (1.0 - w) * pcRho;
+        pE = w * peE + (1.0 - w) * pcE + (pe - pc) / dE;
+    }
+    c2 = pRho + p * pE / (rho * rho);
+    p = std::max(p, pMin_);
+}
+
+double Tillotson::pressure(double rho, double e) const {
+    double p, c2;
+    state(rho, e, p, c2);
+    return p;
+}
+
+double Tillotson::soundSpeedSquared(double rho, double e) const {
+    double p, c2;
+    state(rho, e, p, c2);
+    return c2;
+}
+
+void Tillotson::evaluate(std::size_t n, const double* rho, const double* e, double* p, double* c) const {
+    evaluateBlock(*this, n, rho, e, p, c);
+}
+
+MFDYN_REGISTER(EquationOfState, Tillotson, "tillotson",
+               "Tillotson 1962 (compressed, expanded, blended); keywords rho0, A, B, a, b, alpha, beta, E0, "
+               "Eiv, Ecv");
+
+}  // namespace mfdyn

@@ -1,0 +1,33 @@
+#pragma once
+// Tillotson equation of state (Tillotson 1962). Equations in Tillotson.cpp.
+#include "materials/equationOfState/EquationOfState.hpp"
+
+#include <limits>
+
+namespace mfdyn {
+
+class Tillotson final : public EquationOfState {
+public:
+    explicit Tillotson(const Dictionary& dict);
+
+    double pressure(double rho, double e) const override;
+    double soundSpeedSquared(double rho, double e) const override;
+    void evaluate(std::size_t n, const double* rho, const double* e, double* p, double* c) const override;
+
+    // P and c^2 together (shared work); inlined by evaluate().
+    void state(double rho, double e, double& p, double& c2) const;
+
+    // The two branches on their own, with their partial derivatives dP/drho|_e and dP/de|_rho
+    // (for tests of the interpolation and of continuity).
+    void compressed(double rho, double e, double& p, double& pRho, double& pE) const;
+    void expanded(double rho, double e, double& p, double& pRho, double& pE) const;
+
+    double energyIncipientVaporisation() const { return Eiv_; }
+    double energyCompleteVaporisation() const { return Ecv_; }
+
+private:
+    double A_, B_, a_, b_, alpha_, beta_, E0_, Eiv_, Ecv_;
+    double pMin_ = -std::numeric_limits<double>::infinity();
+};
+
+}  // namespace mfdyn

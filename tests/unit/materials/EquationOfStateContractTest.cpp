@@ -1,0 +1,110 @@
+// The family contract (EquationOfState.hpp) for every registered type, each with a sample
+// parameter set: reference pressure, c^2 > 0 and c^2 = dP/drho|_s, the block form equal to the
+// scalar one, and an error naming each missing required keyword.
+#include "EquationOfStateTestTools.hpp"
+#include "materials/equationOfState/EquationOfState.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <set>
+
+namespace mfdyn {
+namespace {
+
+using test::dictionaryText;
+using test::eosSamples;
+using test::makeEos;
+
+TEST(EquationOfStateContract, EveryRegisteredTypeHasASample) {
+    std::set<std::string> sampled;
+    for (const auto& s : eosSamples()) sampled.insert(s.type);
+    // New once first, so that the library is loaded and its registrations made.
+    makeEos("type idealGas; gamma 1.4;");
+    for (const auto& name : EquationOfState::Selector::names())
+        EXPECT_TRUE(sampled.count(name)) << "no contract sample for registered type " << name;
+    EXPECT_EQ(sampled.size(), 8u);
+}
+
+TEST(EquationOfStateContract, ReferencePressure) {
+    for (const auto& s : eosSamples()) {
+        const auto eos = makeEos(dictionaryText(s));
+        EXPECT_EQ(eos->type(), s.type);
+        // Round-off of a few operations on numbers of size rho0 c0^2 (or the pressure itself).
+        const double scale = std::max({std::abs(s.referencePressure), 1.0});
+        EXPECT_NEAR(eos->pressure(eos->referenceDensity(), 0.0), s.referencePressure, 1e-12 * scale)
+            << s.type;
+    }
+}
+
+TEST(EquationOfStateContract, SoundSpeedIsPositiveAndIsentropic) {
+    for (const auto& s : eosSamples()) {
+        const auto eos = makeEos(dictionaryText(s));
+        for (const auto& [rho, e] : s.states) {
+            const double c2 = eos->soundSpeedSquared(rho, e);
+            EXPECT_GT(c2, 0.0) << s.type << " at rho " << rho << ", e " << e;
+            // h = 1e-4 rho: truncation (h/rho)^2 ~ 1e-8 times O(10) derivative ratios, round-off
+            // 2e-16 |P| / (h c^2) below 1e-10 for these states; 1e-6 leaves room for both.
+            const double numeric = test::isentropicDerivative(*eos, rho, e, 1e-4 * rho);
+            EXPECT_NEAR(c2, numeric, 1e-6 * std::abs(numeric)) << s.type << " at rho " << rho << ", e " << e;
+        }
+    }
+}
+
+TEST(EquationOfStateContract, BlockFormEqualsScalarForm) {
+    for (const auto& s : eosSamples()) {
+        const auto eos = makeEos(dictionaryText(s));
+        std::vector<double> rho, e;
+        for (const auto& [r, en] : s.states) rho.push_back(r), e.push_back(en);
+        std::vector<double> p(rho.size()), c(rho.size());
+        eos->evaluate(rho.size(), rho.data(), e.data(), p.data(), c.data());
+        for (std::size_t i = 0; i < rho.size(); ++i) {
+            // The same formulas, possibly inlined differently: equal to a few ulps.
+            EXPECT_NEAR(p[i], eos->pressure(rho[i], e[i]), 1e-14 * std::abs(p[i]) + 1e-300) << s.type;
+            EXPECT_NEAR(c[i], std::sqrt(eos->soundSpeedSquared(rho[i], e[i])), 1e-14 * c[i]) << s.type;
+        }
+        if (!eos->needsEnergy()) {
+            // Barotropic models accept e = nullptr.
+            eos->evaluate(rho.size(), rho.data(), nullptr, p.data(), c.data());
+            for (std::size_t i = 0; i < rho.size(); ++i)
+                EXPECT_NEAR(p[i], eos->pressure(rho[i], 0.0), 1e-14 * std::abs(p[i])) << s.type;
+        }
+    }
+}
+
+TEST(EquationOfStateContract, BarotropicModelsNeedNoEnergy) {
+    for (const auto& s : eosSamples()) {
+        const bool barotropic = s.type == "linearBarotropic" || s.type == "tait" || s.type == "polytropic";
+        EXPECT_EQ(makeEos(dictionaryText(s))->needsEnergy(), !barotropic) << s.type;
+    }
+}
+
+TEST(EquationOfStateContract, MissingRequiredKeywordIsNamed) {
+    for (const auto& s : eosSamples()) {
+        for (const auto& key : s.required) {
+            try {
+                makeEos(dictionaryText(s, key));
+                ADD_FAILURE() << s.type << " built without required '" << key << "'";
+            } catch (const InputError& error) {
+                EXPECT_NE(std::string(error.what()).find("'" + key + "'"), std::string::npos)
+                    << s.type << ": " << error.what();
+            }
+        }
+    }
+}
+
+TEST(EquationOfStateContract, UnknownTypeListsTheValidOnes) {
+    try {
+        makeEos("type mieGrunesen; rho0 2785; c0 5330; s 1.338; gamma0 2;");
+        FAIL() << "unknown type accepted";
+    } catch (const InputError& error) {
+        const std::string what = error.what();
+        EXPECT_NE(what.find("did you mean 'mieGruneisen'"), std::string::npos) << what;
+        for (const auto& s : eosSamples()) EXPECT_NE(what.find(s.type), std::string::npos) << what;
+    }
+    EXPECT_THROW(makeEos("rho0 1000; c0 10;"), InputError);  // no type at all
+}
+
+}  // namespace
+}  // namespace mfdyn
