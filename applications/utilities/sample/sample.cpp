@@ -84,18 +84,27 @@ std::vector<std::string> columnNames(const FieldBase& f) {
     return names;
 }
 
-// A gnuplot script drawing every field column against distance, one PNG per set.
-void plot(const std::filesystem::path& csv, const std::vector<std::string>& columns) {
+// A gnuplot script drawing each field against distance in its own panel (fields differ in scale
+// by orders of magnitude), its components together; one PNG per set. `groups` holds each
+// field's first and last CSV column (0-based).
+void plot(const std::filesystem::path& csv, const std::vector<std::string>& fields,
+          const std::vector<std::pair<std::size_t, std::size_t>>& groups) {
     const auto png = std::filesystem::path(csv).replace_extension(".png");
     const auto script = std::filesystem::path(csv).replace_extension(".gnuplot");
     {
         std::ofstream out(script);
-        out << "set terminal pngcairo size 900,600 noenhanced\nset output '" << png.string() << "'\n"
-            << "set datafile separator ','\nset key autotitle columnhead outside\nset grid\n"
-            << "set xlabel 'distance [m]'\nplot";
-        for (std::size_t c = 4; c < columns.size(); ++c)
-            out << (c > 4 ? "," : "") << " '" << csv.string() << "' using 1:" << c + 1 << " with linespoints";
-        out << "\n";
+        out << "set terminal pngcairo size 900," << 300 * groups.size() << " noenhanced\nset output '"
+            << png.string() << "'\nset datafile separator ','\nset key autotitle columnhead\nset grid\n"
+            << "set multiplot layout " << groups.size() << ",1\n";
+        for (std::size_t g = 0; g < groups.size(); ++g) {
+            out << "set title '" << fields[g] << "'\n"
+                << (g + 1 == groups.size() ? "set xlabel 'distance [m]'\n" : "") << "plot";
+            for (std::size_t c = groups[g].first; c <= groups[g].second; ++c)
+                out << (c > groups[g].first ? "," : "") << " '" << csv.string() << "' using 1:" << c + 1
+                    << " with linespoints";
+            out << "\n";
+        }
+        out << "unset multiplot\n";
     }
     const std::string command = "gnuplot '" + script.string() + "' > /dev/null 2>&1";
     if (std::system(command.c_str()) != 0)
@@ -146,8 +155,11 @@ int run(const Arguments& args) {
             const auto stencils = interpolation.stencils(set.points());
             std::vector<std::string> columns{set.coordinateName(), "x", "y", "z"};
             std::vector<std::vector<std::vector<double>>> values;
+            std::vector<std::pair<std::size_t, std::size_t>> groups;
             for (const FieldBase* f : chosen) {
+                const std::size_t first = columns.size();
                 for (const auto& c : columnNames(*f)) columns.push_back(c);
+                groups.emplace_back(first, columns.size() - 1);
                 values.push_back(Interpolation::apply(stencils, *f));
             }
             std::size_t empty = 0, fallback = 0;
@@ -173,7 +185,7 @@ int run(const Arguments& args) {
             if (fallback)
                 std::cerr << "Warning: set '" << set.name() << "': at " << fallback
                           << " points the neighbours do not span the dimension; Shepard values used\n";
-            if (plotting && set.type() == SamplingSet::Type::line) plot(csvPath, columns);
+            if (plotting && set.type() == SamplingSet::Type::line) plot(csvPath, fields, groups);
         }
     }
     for (const auto& u : dict.unusedEntries())
