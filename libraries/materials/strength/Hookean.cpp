@@ -79,6 +79,11 @@ double Hookean<Dim>::yieldStress(double, double, double) const {
     return std::numeric_limits<double>::infinity();
 }
 
+template <int Dim>
+std::vector<typename Strength<Dim>::Keyword> Hookean<Dim>::keywords() const {
+    return {shearModulusKey<Dim>, shearFactorKey<Dim>};
+}
+
 template class Hookean<1>;
 template class Hookean<2>;
 template class Hookean<3>;

@@ -27,6 +27,7 @@ public:
     void stressRate(const Fields& fields) const override;
     void returnToYieldSurface(const Fields& fields, double dt) const override;
     double yieldStress(double plasticStrain, double strainRate, double temperature) const override;
+    std::vector<typename Strength<Dim>::Keyword> keywords() const override;
 
     // 2mu, the factor of the deviatoric strain rate (2G unless shearFactor 1).
     double twoMu() const { return twoMu_; }

@@ -127,6 +127,14 @@ void JohnsonCook<Dim>::returnToYieldSurface(const Fields& f, double dt) const {
     }
 }
 
+template <int Dim>
+std::vector<typename Strength<Dim>::Keyword> JohnsonCook<Dim>::keywords() const {
+    auto keys = Hookean<Dim>::keywords();
+    keys.insert(keys.end(), {aKey<Dim>, bKey<Dim>, nKey<Dim>, cKey<Dim>, mKey<Dim>, rateKey<Dim>,
+                             roomKey<Dim>, meltKey<Dim>, heatKey<Dim>, betaKey<Dim>});
+    return keys;
+}
+
 template class JohnsonCook<1>;
 template class JohnsonCook<2>;
 template class JohnsonCook<3>;

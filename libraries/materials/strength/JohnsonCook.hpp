@@ -39,6 +39,7 @@ public:
 
     void returnToYieldSurface(const Fields& fields, double dt) const override;
     double yieldStress(double plasticStrain, double strainRate, double temperature) const override;
+    std::vector<typename Strength<Dim>::Keyword> keywords() const override;
 
 private:
     // (1 + C ln(max(rate/epsilonDot0, 1))) (1 - T*^m): the factor of A + B epsP^n.

@@ -114,6 +114,11 @@ public:
     // temperature [K]: +infinity for a law without yield, 0 for `none`.
     virtual double yieldStress(double plasticStrain, double strainRate, double temperature) const = 0;
 
+    // The model's numeric keywords (its schema: name, unit, meaning, default, bounds), for
+    // listings, generated docs and the family's keyword tests. Word options (deviator, libersky)
+    // are described in the model's header.
+    virtual std::vector<Keyword> keywords() const { return {}; }
+
     // G [Pa] (0 for none).
     double shearModulus() const { return shearModulus_; }
     // sqrt(3 J2) with the implied out-of-plane components (see the header comment).

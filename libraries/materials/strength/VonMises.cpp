@@ -68,6 +68,13 @@ double VonMises<Dim>::yieldStress(double plasticStrain, double, double) const {
     return yield0_ + hardening_ * plasticStrain;
 }
 
+template <int Dim>
+std::vector<typename Strength<Dim>::Keyword> VonMises<Dim>::keywords() const {
+    auto keys = Hookean<Dim>::keywords();
+    keys.insert(keys.end(), {yieldStressKey<Dim>, hardeningKey<Dim>});
+    return keys;
+}
+
 template class VonMises<1>;
 template class VonMises<2>;
 template class VonMises<3>;

@@ -26,6 +26,7 @@ public:
     bool usesPlasticStrain() const override { return true; }
     void returnToYieldSurface(const Fields& fields, double dt) const override;
     double yieldStress(double plasticStrain, double strainRate, double temperature) const override;
+    std::vector<typename Strength<Dim>::Keyword> keywords() const override;
 
     double hardeningModulus() const { return hardening_; }
     bool libersky() const { return libersky_; }

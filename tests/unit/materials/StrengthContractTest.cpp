@@ -18,10 +18,21 @@ constexpr double yield0 = 0.265e9;
 
 // Al-2024 (note Table 6.1) for the elastic and von Mises constants; Johnson & Cook's 2024-T351
 // hardening so that johnsonCook's initial yield equals yieldStress at room temperature.
-std::string contractDictionary(const std::string& type) {
-    return "type " + type +
-           "; shearModulus 27.1e9; yieldStress 0.265e9; A 0.265e9; B 0.426e9; n 0.34; C 0.015; m 1;"
-           " Tmelt 775; specificHeat 875;";
+const std::vector<std::pair<std::string, std::string>> contractKeywords{{"shearModulus", "27.1e9"},
+                                                                        {"yieldStress", "0.265e9"},
+                                                                        {"A", "0.265e9"},
+                                                                        {"B", "0.426e9"},
+                                                                        {"n", "0.34"},
+                                                                        {"C", "0.015"},
+                                                                        {"m", "1"},
+                                                                        {"Tmelt", "775"},
+                                                                        {"specificHeat", "875"}};
+
+std::string contractDictionary(const std::string& type, const std::string& without = "") {
+    std::string text = "type " + type + ";";
+    for (const auto& [key, value] : contractKeywords)
+        if (key != without) text += " " + key + " " + value + ";";
+    return text;
 }
 
 // One block of `n` particles with every field a model may use.
@@ -104,8 +115,33 @@ TYPED_TEST(StrengthContract, BuiltInTypesAreRegistered) {
         EXPECT_EQ(s->type(), t);
         // Only `none` may leave tau unallocated, and then it has no strength at all.
         EXPECT_EQ(s->allocatesStress(), t != "none") << t;
+        EXPECT_EQ(s->keywords().empty(), t == "none") << t;  // every elastic law declares G at least
         if (!s->allocatesStress()) {
             EXPECT_EQ(s->yieldStress(0.0, 0.0, 300.0), 0.0) << t;
+        }
+    }
+}
+
+// The schema each model declares: defaults within bounds, and every required keyword, removed
+// from the dictionary, reported by name.
+TYPED_TEST(StrengthContract, RequiredKeywordsAreNamedWhenMissing) {
+    constexpr int Dim = TypeParam::value;
+    for (const auto& type : registeredTypes<Dim>()) {
+        const auto s = make<Dim>(type);
+        for (const auto& key : s->keywords()) {
+            if (key.fallback) {
+                const double v = *key.fallback;
+                EXPECT_TRUE((key.lowerOpen ? v > key.lower : v >= key.lower) && v <= key.upper) << key.name;
+                continue;
+            }
+            try {
+                Strength<Dim>::New(Dictionary::parse(contractDictionary(type, key.name), "test"));
+                ADD_FAILURE() << type << " built without required " << key.name;
+            } catch (const InputError& e) {
+                EXPECT_NE(std::string(e.what()).find("missing keyword '" + std::string(key.name) + "'"),
+                          std::string::npos)
+                    << e.what();
+            }
         }
     }
 }
