@@ -15,9 +15,13 @@ namespace mfdyn {
 
 int threadCount();
 
+// Below this many items a loop runs on one thread: starting a parallel region costs more than
+// the work (and far more on an oversubscribed machine, where waiting threads are descheduled).
+inline constexpr std::size_t parallelThreshold = 4096;
+
 template <class Body>
 void parallelFor(std::size_t n, Body&& body) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= parallelThreshold)
     for (std::size_t i = 0; i < n; ++i) body(i);
 }
 
@@ -29,7 +33,7 @@ struct Reduce {
     static T sum(std::size_t n, Term&& term) {
         const std::size_t blocks = (n + blockSize - 1) / blockSize;
         std::vector<T> partial(blocks, T{});
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= parallelThreshold)
         for (std::size_t b = 0; b < blocks; ++b) {
             T s{};
             const std::size_t end = std::min(n, (b + 1) * blockSize);
@@ -44,7 +48,7 @@ struct Reduce {
     template <class Term>
     static double max(std::size_t n, Term&& term) {
         double m = -std::numeric_limits<double>::infinity();
-#pragma omp parallel for reduction(max : m) schedule(static)
+#pragma omp parallel for reduction(max : m) schedule(static) if (n >= parallelThreshold)
         for (std::size_t i = 0; i < n; ++i) m = std::max(m, double(term(i)));
         return globalMax(m);
     }
@@ -52,7 +56,7 @@ struct Reduce {
     template <class Term>
     static double min(std::size_t n, Term&& term) {
         double m = std::numeric_limits<double>::infinity();
-#pragma omp parallel for reduction(min : m) schedule(static)
+#pragma omp parallel for reduction(min : m) schedule(static) if (n >= parallelThreshold)
         for (std::size_t i = 0; i < n; ++i) m = std::min(m, double(term(i)));
         return globalMin(m);
     }

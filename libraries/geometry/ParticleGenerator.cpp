@@ -89,13 +89,14 @@ std::unique_ptr<ParticleSetBase> ParticleGenerator::generate() {
     if (regions.size() == 0) throw regions.error("", "no regions defined");
 
     std::vector<std::string> fieldNames;  // union over regions, in order of first appearance
-    std::vector<int> fieldComponents;
+    std::vector<int> fieldComponents;  // 0 for a scalar field, dim for a vector field
     struct Particle {
         std::vector<double> x;
         std::int64_t region;
         double mass;
         std::vector<std::pair<int, std::vector<double>>> values;
         std::int64_t material;
+        double density;
     };
     std::vector<Particle> all;
     std::vector<std::string> regionNames;
@@ -175,7 +176,11 @@ std::unique_ptr<ParticleSetBase> ParticleGenerator::generate() {
         if (const Dictionary* fields = r.findDict("fields")) {
             for (const auto& f : fields->entries()) {
                 std::vector<double> v;
-                if (f->tokens.size() == 1 && f->tokens[0].isNumber()) {
+                // A bare number is a scalar, a parenthesised list a vector (also in 1D, where both have
+                // one component): recorded as 0 or dim in fieldComponents.
+                const bool scalar = f->tokens.size() == 1 && f->tokens[0].isNumber();
+                const int components = scalar ? 0 : dim;
+                if (scalar) {
                     v = {fields->get<double>(f->key)};
                 } else {
                     v = fields->get<std::vector<double>>(f->key);
@@ -198,8 +203,8 @@ std::unique_ptr<ParticleSetBase> ParticleGenerator::generate() {
                 if (index < 0) {
                     index = int(fieldNames.size());
                     fieldNames.push_back(f->key);
-                    fieldComponents.push_back(int(v.size()));
-                } else if (fieldComponents[index] != int(v.size())) {
+                    fieldComponents.push_back(components);
+                } else if (fieldComponents[index] != components) {
                     throw fields->error(
                         f->key, "field '" + f->key + "' is a scalar in one region and a vector in another");
                 }
@@ -235,7 +240,7 @@ std::unique_ptr<ParticleSetBase> ParticleGenerator::generate() {
         for (std::size_t p = 0; p * dim < points.size(); ++p) {
             std::vector<double> x(points.begin() + long(p * dim), points.begin() + long((p + 1) * dim));
             if (!shape->inside(x.data())) continue;
-            all.push_back({x, regionId, mass, values, materialId});
+            all.push_back({x, regionId, mass, values, materialId, density});
             if (omega) {
                 const auto& w = *omega;
                 double r3[3] = {0, 0, 0};
@@ -281,14 +286,18 @@ std::unique_ptr<ParticleSetBase> ParticleGenerator::generate() {
         auto& id = set->globalId();
         auto& region = set->region();
         auto& mass = set->scalarField("mass");
+        // The initial density is part of the state every method starts from (SPH evolves it;
+        // the particle volume is m/rho).
+        auto& density = set->scalarField("density");
         for (std::size_t i = 0; i < all.size(); ++i) {
+            density[i] = all[i].density;
             for (int c = 0; c < Dim; ++c) x[i][c] = all[i].x[c];
             id[i] = std::int64_t(i);
             region[i] = all[i].region;
             mass[i] = all[i].mass;
         }
         for (std::size_t f = 0; f < fieldNames.size(); ++f) {
-            if (fieldComponents[f] == 1) {
+            if (fieldComponents[f] == 0) {
                 auto& field = set->scalarField(fieldNames[f]);
                 for (std::size_t i = 0; i < all.size(); ++i)
                     for (const auto& [index, v] : all[i].values)

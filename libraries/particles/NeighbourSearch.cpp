@@ -275,7 +275,7 @@ void NeighbourSearch<Dim>::fillBlocks() {
     rowLength_.resize(n);
     // Dynamic schedule: clustered clouds give blocks of very different cost, and where a block
     // runs does not change what it writes.
-#pragma omp parallel for schedule(dynamic)
+#pragma omp parallel for schedule(dynamic) if (blocks > 1)
     for (std::int64_t b = 0; b < blocks; ++b) {
         std::vector<Index>& buffer = blockIndices_[std::size_t(b)];
         buffer.clear();
@@ -314,7 +314,7 @@ NeighbourList NeighbourSearch<Dim>::list() {
     for (std::size_t i = 0; i < n; ++i) offsets[i + 1] += offsets[i];
     std::vector<Index> indices(offsets[n]);
     const std::int64_t blocks = std::int64_t(blockIndices_.size());
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (blocks > 1)
     for (std::int64_t b = 0; b < blocks; ++b) {
         const std::vector<Index>& buffer = blockIndices_[std::size_t(b)];
         std::size_t position = 0;

@@ -212,7 +212,7 @@ int SolverRun::run(Solver& solver) {
     const std::int64_t steps = time.timeIndex() - startIndex;
     std::ostringstream s;
     for (const auto& line : functions.summary()) s << "\n    " << line;
-    if (!s.str().empty()) Log::info("Conservation:" + s.str());
+    if (!s.str().empty()) Log::info("Diagnostics:" + s.str());
     if (!norms.empty()) {
         std::ostringstream t;
         char row[256];

@@ -84,6 +84,7 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
       hLaw_(SmoothingLengthLaw::New(properties_.subDict("smoothingLength"))),
       diss_(Dissipation::New(properties_.subDict("dissipation"))->parameters()),
       densityRateLimit_(properties_.getOrDefault<double>("densityRateLimit", 0.0)),
+      omegaMin_(properties_.subDict("densityScheme").getOrDefault<double>("omegaMin", 0.5)),
       x_(particles_->position()),
       v_(particles_->vectorField("velocity")),
       m_(requireScalar(*particles_, "mass", "particle masses")),
@@ -218,7 +219,11 @@ void SphSolver<Dim>::computeDensitySums() {
             count += w;
             dh += b_[j] * W_.dWdh(r, hi);
         }
-        if (omega_) (*omega_)[i] = 1.0 + hi / (Dim * sum) * dh;
+        // At a free surface the sum behind ω loses its far half and ω falls towards 0 as the edge
+        // thins, which would blow dρ/dt up there; ω is floored (omegaMin). Any per-particle ω
+        // keeps the pair forces antisymmetric and the energy equation matched, so the floor
+        // costs no conservation, only the exact variational form at those few particles.
+        if (omega_) (*omega_)[i] = std::max(omegaMin_, 1.0 + hi / (Dim * sum) * dh);
         if (number_) (*number_)[i] = count;
         if (summation) newRho[i] = cc_[i] * sum;
     });

@@ -7,7 +7,7 @@
 //
 // constant/sphProperties:
 //     kernel          { type gaussian; }                        // any registered kernel
-//     densityScheme   { type number; form continuity; gradH yes; }
+//     densityScheme   { type number; form continuity; gradH yes; omegaMin 0.5; }  // ω floor at free surfaces
 //     smoothingLength { type massDensity; eta 1.2; }
 //     dissipation     { type riemann; velocity (1 2); density (0.5 2); energy (0.1 2); }
 //     densityRateLimit 0.2;   // Δt ≤ ξ ρ/|dρ/dt| as well as the Courant limit (0: off)
@@ -74,6 +74,7 @@ private:
     std::unique_ptr<SmoothingLengthLaw> hLaw_;
     DissipationParameters diss_;
     double densityRateLimit_;
+    double omegaMin_;
     std::vector<Material> materials_;
     bool needsEnergy_ = false;
 

@@ -1,0 +1,144 @@
+// riemannError: a 1D run against the exact solution of its Riemann problem (two uniform states
+// meeting at x0 at the start time; libraries/verification/RiemannSolver). For each field f of
+// density, velocity, pressure, specificInternalEnergy, over the particles in [from, to] with
+// weights w = m/ρ (their lengths):
+//
+//   L1 = Σ w|f − f_exact| / Σ w,   L2 = (Σ w (f − f_exact)² / Σ w)^½,   Linf = max |f − f_exact|
+//
+// written to errorNorms.csv. starState.csv compares the star pressure and velocity with the exact
+// ones: the median over the particles between the left wave's tail and the right wave's head,
+// leaving out 10% of that plateau's width at each end and around the contact (where SPH smears).
+//
+//     riemann
+//     {
+//         type riemannError;  x0 0.5;  interval (0 1);  fields (density velocity pressure);
+//         left  { density 1;     velocity 0; pressure 1;   equationOfState { type idealGas; gamma 1.4; } }
+//         right { density 0.125; velocity 0; pressure 0.1; equationOfState { type idealGas; gamma 1.4; } }
+//     }
+//
+// equationOfState types: idealGas (gamma), stiffenedGas (gamma, pRef), linearBarotropic (rho0, c0).
+#include "functionObjects/RiemannError.hpp"
+
+#include "verification/ErrorNorms.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace mfdyn {
+
+namespace {
+
+RiemannEquationOfState readEos(const Dictionary& dict) {
+    const std::string type = dict.get<std::string>("type");
+    if (type == "idealGas") return RiemannEquationOfState::idealGas(dict.get<double>("gamma"));
+    if (type == "stiffenedGas")
+        return RiemannEquationOfState::stiffenedGas(dict.get<double>("gamma"), dict.get<double>("pRef"));
+    if (type == "linearBarotropic")
+        return RiemannEquationOfState::linearBarotropic(dict.get<double>("rho0"), dict.get<double>("c0"));
+    throw dict.error("type", "riemannError has an exact solver for idealGas, stiffenedGas and linearBarotropic, "
+                             "not '" + type + "'");
+}
+
+PrimitiveState readState(const Dictionary& dict) {
+    return {dict.get<double>("density"), dict.get<double>("velocity"), dict.get<double>("pressure")};
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return NAN;
+    std::nth_element(v.begin(), v.begin() + long(v.size() / 2), v.end());
+    return v[v.size() / 2];
+}
+
+}  // namespace
+
+RiemannError::RiemannError(const Dictionary& dict, const std::string& name, const RunContext& context)
+    : FunctionObject(dict, name, context),
+      t0_(context.time().value()),
+      fields_(dict.getOrDefault<std::vector<std::string>>("fields", {"density", "velocity", "pressure"})),
+      norms_(outputFile("errorNorms.csv"), name) {
+    if (context.dimension() != 1) throw dict.error("type", "riemannError compares 1D runs; this case is " +
+                                                               std::to_string(context.dimension()) + "D");
+    const Dictionary& left = dict.subDict("left");
+    const Dictionary& right = dict.subDict("right");
+    exact_ = std::make_unique<ShockTubeSolution>(dict.get<double>("x0"), readState(left),
+                                                 readEos(left.subDict("equationOfState")), readState(right),
+                                                 readEos(right.subDict("equationOfState")));
+    const auto interval = dict.get<std::vector<double>>("interval");
+    if (interval.size() != 2 || !(interval[1] > interval[0]))
+        throw dict.error("interval", "expected (from to) with from < to");
+    from_ = interval[0], to_ = interval[1];
+    for (const auto& f : fields_) {
+        if (f != "density" && f != "velocity" && f != "pressure" && f != "specificInternalEnergy")
+            throw dict.error("fields", "'" + f + "' has no exact counterpart; valid: density velocity pressure "
+                                                 "specificInternalEnergy");
+        if (!context.fields().findField(f)) throw dict.error("fields", "this run has no field '" + f + "'");
+    }
+    star_ = std::make_unique<CsvFile>(outputFile("starState.csv"),
+                                      std::vector<std::string>{"time", "pStar", "pStarExact", "uStar", "uStarExact"});
+}
+
+void RiemannError::write() {
+    const FieldStore& fields = context().fields();
+    const std::size_t n = fields.size();
+    const double t = context().time().value() - t0_;
+    if (n == 0 || t <= 0) return;
+    std::vector<double> x(n), w(n);
+    const FieldBase& position = fields.field("position");
+    const FieldBase& mass = fields.field("mass");
+    const FieldBase& rho = fields.field("density");
+    for (std::size_t i = 0; i < n; ++i) x[i] = position.component(i, 0), w[i] = mass.component(i, 0) / rho.component(i, 0);
+
+    for (const auto& name : fields_) {
+        const FieldBase& f = fields.field(name);
+        std::vector<double> values(n);
+        for (std::size_t i = 0; i < n; ++i) values[i] = f.component(i, 0);
+        auto exact = [&](double xi) {
+            const FlowState s = exact_->state(xi, t);
+            if (name == "density") return s.density;
+            if (name == "velocity") return s.velocity;
+            if (name == "pressure") return s.pressure;
+            return s.internalEnergy;
+        };
+        const ErrorNorms e = ErrorNorms::compute(x, values, w, exact, from_, to_);
+        norms_.add(context().time().value(), name, e.l1, e.l2, e.linf);
+    }
+
+    // Star state: the plateau between the waves, away from its edges and the contact.
+    const auto waves = exact_->wavePositions(t);
+    const double width = waves.rightTail - waves.leftTail;
+    const double margin = 0.1 * width;
+    const FieldBase& p = fields.field("pressure");
+    const FieldBase& v = fields.field("velocity");
+    std::vector<double> ps, vs;
+    for (std::size_t i = 0; i < n; ++i) {
+        const double xi = x[i];
+        if (xi < waves.leftTail + margin || xi > waves.rightTail - margin || std::abs(xi - waves.contact) < margin)
+            continue;
+        ps.push_back(p.component(i, 0)), vs.push_back(v.component(i, 0));
+    }
+    const double pStar = median(ps), uStar = median(vs);
+    const double pExact = exact_->solver().starPressure(), uExact = exact_->solver().starVelocity();
+    star_->row({context().time().value(), pStar, pExact, uStar, uExact});
+
+    // The profile beside the exact one, for plots: profile_<time>.csv, particles in order of x.
+    std::vector<std::size_t> order(n);
+    for (std::size_t i = 0; i < n; ++i) order[i] = i;
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return x[a] < x[b]; });
+    CsvFile profile(outputFile("profile_" + context().time().timeName() + ".csv"),
+                    {"x", "density", "densityExact", "velocity", "velocityExact", "pressure", "pressureExact"});
+    for (const std::size_t i : order) {
+        if (x[i] < from_ || x[i] > to_) continue;
+        const FlowState s = exact_->state(x[i], t);
+        profile.row({x[i], rho.component(i, 0), s.density, v.component(i, 0), s.velocity, p.component(i, 0), s.pressure});
+    }
+    char line[200];
+    std::snprintf(line, sizeof line, "star pressure %.6g (exact %.6g, %+.2f%%), star velocity %.6g (exact %.6g, %+.2f%%)",
+                  pStar, pExact, 100 * (pStar - pExact) / pExact, uStar, uExact, 100 * (uStar - uExact) / uExact);
+    summary_ = {line};
+}
+
+MFDYN_REGISTER(FunctionObject, RiemannError, "riemannError",
+               "1D run against the exact Riemann solution: L1/L2/Linf of rho, v, P, e and the star state");
+
+}  // namespace mfdyn

@@ -1,0 +1,26 @@
+#pragma once
+#include "functionObjects/FunctionObject.hpp"
+#include "verification/ShockTubeSolution.hpp"
+
+#include <memory>
+
+namespace mfdyn {
+
+class RiemannError final : public FunctionObject {
+public:
+    RiemannError(const Dictionary& dict, const std::string& name, const RunContext& context);
+    void write() override;
+    std::vector<ErrorNorm> errorNorms() const override { return norms_.latest(); }
+    std::vector<std::string> summary() const override { return summary_; }
+
+private:
+    std::unique_ptr<ShockTubeSolution> exact_;
+    double t0_;
+    double from_, to_;
+    std::vector<std::string> fields_;
+    ErrorNormWriter norms_;
+    std::unique_ptr<CsvFile> star_;
+    std::vector<std::string> summary_;
+};
+
+}  // namespace mfdyn
