@@ -1,0 +1,44 @@
+# Shared by the impactSph case tests: $1 = build directory, $2 = this source directory.
+set -euo pipefail
+BUILD="$1"
+SOURCE="$2"
+TUTORIALS="$(cd "$SOURCE/../../../tutorials/impactSph" && pwd)"
+export PATH="$BUILD/bin:$PATH"
+# One thread: the runs are small (a few hundred to two thousand particles), a second thread buys
+# little there and makes run times erratic when ctest runs tests side by side.
+export OMP_NUM_THREADS=1
+WORK="$(mktemp -d "${TMPDIR:-/tmp}/mfdyn-test.XXXXXX")"
+trap 'rm -rf "$WORK"' EXIT
+
+fail() { echo "FAIL: $*" >&2; exit 1; }
+pass() { echo "PASS: $*"; }
+
+# newCase <source case> <name>: a copy of the case's system/ and constant/ in $WORK/<name>.
+newCase() {
+    mkdir -p "$WORK/$2"
+    cp -r "$1/system" "$1/constant" "$WORK/$2/"
+    echo "$WORK/$2"
+}
+
+# runCase <case>: particleGen then impactSph, logs in the case; prints the wall time in seconds.
+runCase() {
+    particleGen -case "$1" > "$1/log.particleGen" 2>&1 || fail "particleGen failed on $1: $(tail "$1/log.particleGen")"
+    impactSph -case "$1" > "$1/log.impactSph" 2>&1 || fail "impactSph failed on $1: $(tail -n 20 "$1/log.impactSph")"
+    awk '/^ *wall time/ { print $3; exit }' "$1/log.impactSph"
+}
+
+# setEntry <dictionary> <scoped entry> <value>
+setEntry() { mfDictionary "$1" -entry "$2" -set "$3" > /dev/null || fail "could not set $2 in $1"; }
+
+# column <csv> <header name>: that column of the last row.
+column() {
+    awk -F, -v name="$2" 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == name) c = i; next }
+                          { v = $c } END { if (!c) exit 1; print v }' "$1" || fail "$1 has no column $2"
+}
+
+# lastRow <csv> <pattern>: the last line matching pattern.
+lastRow() { grep -- "$2" "$1" | tail -n 1; }
+
+# Float comparison a < b; relErr a b = |a - b|/|b|.
+less() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a + 0 < b + 0) }'; }
+relErr() { awk -v a="$1" -v b="$2" 'BEGIN { d = (a - b) / b; if (d < 0) d = -d; printf "%.4g", d }'; }
