@@ -6,6 +6,13 @@
 //   momentum               m_i dv_i/dt = −Σ_j [a_i b_j P_i/ω_i ∇_iW_ij(h_i) + a_j b_i P_j/ω_j ∇_iW_ij(h_j)]  (+ viscosity)
 //   energy                 de_i/dt = (P_i/ρ_i²)(c_i/ω_i) Σ_j b_j v_ij·∇_iW_ij(h_i)  (+ heating, conduction)
 //
+// Strength (Zisis 2017 eqs. 6.5–6.9, volume form without ω; sign of 6.9 corrected, note §12):
+//   velocity gradient      L_i = −Σ_j (m_j/ρ_j) v_ij ⊗ ∇_iW_ij(h_i),   (L_ab = ∂v_a/∂x_b)
+//   force                  dv_i/dt += ρ_i⁻¹ Σ_j (m_j/ρ_j) [τ_i ∇_iW_ij(h_i) + τ_j ∇_iW_ij(h_j)]
+//   heating                de_i/dt += (τ_i/ρ_i) : L_i
+//   stress                 dτ/dt from the material's strength law (Jaumann rate), integrated with
+//                          U by the leapfrog and returned to the yield surface after each update.
+//
 // with the scheme's a, b, c (DensityScheme.hpp); the sums include the particle itself where W(0) ≠ 0.
 // Leapfrog (Zisis 2017 eqs. 4.29–4.34), U = {v, ρ, e}, f = dU/dt:
 //
@@ -106,9 +113,12 @@ void SphSolver<Dim>::readMaterials() {
     for (const auto& entry : all.entries()) {
         if (!entry->isDict()) throw all.error(entry->key, "expected a material dictionary");
         const Dictionary& m = all.subDict(entry->key);
-        materials_.push_back({entry->key, EquationOfState::New(m.subDict("equationOfState"))});
+        materials_.push_back({entry->key, EquationOfState::New(m.subDict("equationOfState")), nullptr});
         if (materials_.back().eos->needsEnergy()) needsEnergy_ = true;
-        m.findDict("strength");  // strength models arrive with the strength family
+        if (const Dictionary* strength = m.findDict("strength")) {
+            auto law = Strength<Dim>::New(*strength);
+            if (law->allocatesStress()) materials_.back().strength = std::move(law), anyStrength_ = true;
+        }
     }
     if (materials_.empty()) throw all.error("", "no materials defined");
     std::vector<std::string> names;
@@ -173,6 +183,27 @@ void SphSolver<Dim>::initialiseFields() {
     vHalf_ = &particles_->vectorField("velocityHalfStep");
     if (!scheme_->summation()) rhoHalf_ = &particles_->scalarField("densityHalfStep");
     if (needsEnergy_) eHalf_ = &particles_->scalarField("specificInternalEnergyHalfStep");
+    if (anyStrength_) {
+        tau_ = &particles_->symmTensorField("deviatoricStress");
+        tauHalf_ = &particles_->symmTensorField("deviatoricStressHalfStep");
+        bool plastic = false, thermal = false;
+        for (const auto& m : materials_) {
+            if (!m.strength) continue;
+            plastic = plastic || m.strength->usesPlasticStrain();
+            thermal = thermal || m.strength->usesTemperature();
+        }
+        if (plastic) plasticStrain_ = &particles_->scalarField("plasticStrain");
+        if (thermal) {
+            const bool had = particles_->hasField("temperature");
+            temperature_ = &particles_->scalarField("temperature");
+            if (!had)
+                for (std::size_t i = 0; i < n; ++i)
+                    if (const auto& law = materials_[material_[i]].strength; law && law->usesTemperature())
+                        (*temperature_)[i] = law->initialTemperature();
+        }
+        velocityGradient_.assign(n, Tensor<Dim>::Zero());
+        dtaudt_.assign(n, SymmTensor<Dim>{});
+    }
     dvdt_.assign(n, Vector<Dim>::Zero());
     drhodt_.assign(n, 0.0);
     dedt_.assign(n, 0.0);
@@ -312,6 +343,20 @@ void SphSolver<Dim>::computeRates() {
         drhodt_[i] = drho + massFlux;
         dvdt_[i] = force / m_[i];
         dedt_[i] = Pi / (rhoi * rhoi) * drho + heating;
+        if (tau_) {
+            const Tensor<Dim> taui = (*tau_)[i].full();
+            Vector<Dim> stressForce = Vector<Dim>::Zero();
+            for (const auto j : neighbours_[i]) {
+                const Vector<Dim> xij = x_[i] - x_[j];
+                const double r = xij.norm();
+                if (r == 0) continue;
+                const Vector<Dim> rhat = xij / r;
+                stressForce += (m_[j] / rho_[j]) * (W_.dWdr(r, hi) * (taui * rhat) +
+                                                     W_.dWdr(r, h_[j]) * ((*tau_)[j].full() * rhat));
+            }
+            dvdt_[i] += stressForce / rhoi;
+            dedt_[i] += (taui.cwiseProduct(velocityGradient_[i])).sum() / rhoi;
+        }
     });
     rateSeconds_ += watch.seconds();
 }
@@ -323,8 +368,58 @@ void SphSolver<Dim>::ensureRates() {
     computeDensitySums();
     computeEquationOfState();
     checkState("computeEquationOfState");
+    if (anyStrength_) {
+        computeVelocityGradient();
+        computeStressRate();
+    }
     computeRates();
     ratesValid_ = true;
+}
+
+template <int Dim>
+void SphSolver<Dim>::computeVelocityGradient() {
+    Stopwatch watch;
+    parallelFor(x_.size(), [&](std::size_t i) {
+        Tensor<Dim> L = Tensor<Dim>::Zero();
+        for (const auto j : neighbours_[i]) {
+            const Vector<Dim> xij = x_[i] - x_[j];
+            const double r = xij.norm();
+            if (r == 0) continue;
+            L -= (m_[j] / rho_[j] * W_.dWdr(r, h_[i]) / r) * (v_[i] - v_[j]) * xij.transpose();
+        }
+        velocityGradient_[i] = L;
+    });
+    strengthSeconds_ += watch.seconds();
+}
+
+template <int Dim>
+typename Strength<Dim>::Fields SphSolver<Dim>::strengthFields(std::size_t i, SymmTensor<Dim>* tau) {
+    typename Strength<Dim>::Fields f;
+    f.size = 1;
+    f.velocityGradient = &velocityGradient_[i];
+    f.density = &rho_[i];
+    f.tau = tau;
+    f.tauRate = &dtaudt_[i];
+    f.plasticStrain = plasticStrain_ ? &(*plasticStrain_)[i] : nullptr;
+    f.temperature = temperature_ ? &(*temperature_)[i] : nullptr;
+    return f;
+}
+
+template <int Dim>
+void SphSolver<Dim>::computeStressRate() {
+    Stopwatch watch;
+    parallelFor(x_.size(), [&](std::size_t i) {
+        if (const auto& law = materials_[material_[i]].strength) law->stressRate(strengthFields(i, &(*tau_)[i]));
+        else dtaudt_[i] = SymmTensor<Dim>{};
+    });
+    strengthSeconds_ += watch.seconds();
+}
+
+template <int Dim>
+void SphSolver<Dim>::returnToYieldSurface(std::vector<SymmTensor<Dim>>& tau, double dt) {
+    parallelFor(x_.size(), [&](std::size_t i) {
+        if (const auto& law = materials_[material_[i]].strength) law->returnToYieldSurface(strengthFields(i, &tau[i]), dt);
+    });
 }
 
 template <int Dim>
@@ -366,6 +461,27 @@ void SphSolver<Dim>::step(double dt) {
             (*e_)[i] = eh + 0.5 * dt * dedt_[i];
         }
     });
+    if (tau_) {
+        // τ advances with U; the half-step stress and the synchronised one each return to the
+        // yield surface (the plastic history advances on the half step, which carries the state).
+        auto& tau = *tau_;
+        auto& tauHalf = *tauHalf_;
+        parallelFor(n, [&](std::size_t i) {
+            for (int k = 0; k < SymmTensor<Dim>::size; ++k)
+                tauHalf[i].c[k] = (started_ ? tauHalf[i].c[k] : tau[i].c[k]) + weight * dtaudt_[i].c[k];
+        });
+        returnToYieldSurface(tauHalf, weight);
+        parallelFor(n, [&](std::size_t i) {
+            for (int k = 0; k < SymmTensor<Dim>::size; ++k) tau[i].c[k] = tauHalf[i].c[k] + 0.5 * dt * dtaudt_[i].c[k];
+        });
+        std::vector<double> history;
+        if (plasticStrain_) history = *plasticStrain_;  // the synchronised return must not advance it twice
+        std::vector<double> heat;
+        if (temperature_) heat = *temperature_;
+        returnToYieldSurface(tau, 0.5 * dt);
+        if (plasticStrain_) *plasticStrain_ = std::move(history);
+        if (temperature_) *temperature_ = std::move(heat);
+    }
     started_ = true;
     previousDeltaT_ = dt;
     ratesValid_ = false;
@@ -429,6 +545,7 @@ std::vector<std::pair<std::string, double>> SphSolver<Dim>::phaseTimes() const {
             {"densitySums", sumSeconds_},
             {"equationOfState", eosSeconds_},
             {"computeRates", rateSeconds_},
+            {"strength", strengthSeconds_},
             {"integrate", integrateSeconds_}};
 }
 

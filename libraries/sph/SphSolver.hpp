@@ -12,16 +12,20 @@
 //     dissipation     { type riemann; velocity (1 2); density (0.5 2); energy (0.1 2); }
 //     densityRateLimit 0.2;   // Δt ≤ ξ ρ/|dρ/dt| as well as the Courant limit (0: off)
 //
-// constant/materialProperties:  materials { name { equationOfState { type idealGas; gamma 1.4; } } }
+// constant/materialProperties:  materials { name { equationOfState { type idealGas; gamma 1.4; }
+//                                                  strength { type vonMises; } } }   // strength optional
 // Particles carry `material` (an index into the particle file's material names) or, without it,
 // take the material named like their region, or the only material there is.
 //
 // Fields allocated: position, velocity, mass, density, pressure, soundSpeed, smoothingLength,
 // material; specificInternalEnergy only when some equation of state needs it; omega when gradH;
-// numberDensity when the smoothing-length law needs it; the leapfrog's half-step copies.
+// numberDensity when the smoothing-length law needs it; the leapfrog's half-step copies;
+// deviatoricStress (and plasticStrain, temperature as the laws ask) only when a material has a
+// strength law other than none: a hydrodynamic scene carries no stress and runs no stress terms.
 #include "kernels/Kernel.hpp"
 #include "kernels/KernelEvaluator.hpp"
 #include "materials/equationOfState/EquationOfState.hpp"
+#include "materials/strength/Strength.hpp"
 #include "particles/NeighbourSearch.hpp"
 #include "solver/Solver.hpp"
 #include "sph/DensityScheme.hpp"
@@ -52,6 +56,7 @@ private:
     struct Material {
         std::string name;
         std::unique_ptr<EquationOfState> eos;
+        std::unique_ptr<Strength<Dim>> strength;  // null: no deviatoric stress
     };
 
     void readMaterials();
@@ -60,6 +65,10 @@ private:
     void updateNeighbours();
     void computeEquationOfState();
     void computeDensitySums();
+    void computeVelocityGradient();
+    void computeStressRate();
+    void returnToYieldSurface(std::vector<SymmTensor<Dim>>& tau, double dt);
+    typename Strength<Dim>::Fields strengthFields(std::size_t i, SymmTensor<Dim>* tau);
     void computeRates();
     void updateSmoothingLength();
     void checkState(const char* phase) const;
@@ -77,6 +86,7 @@ private:
     double omegaMin_;
     std::vector<Material> materials_;
     bool needsEnergy_ = false;
+    bool anyStrength_ = false;
 
     std::vector<Vector<Dim>>& x_;
     std::vector<Vector<Dim>>& v_;
@@ -93,6 +103,14 @@ private:
     std::vector<Vector<Dim>>* vHalf_ = nullptr;
     std::vector<double>* rhoHalf_ = nullptr;
     std::vector<double>* eHalf_ = nullptr;
+    // Strength (allocated only when some material has one): deviatoric stress τ, its half step,
+    // and the history the laws ask for.
+    std::vector<SymmTensor<Dim>>* tau_ = nullptr;
+    std::vector<SymmTensor<Dim>>* tauHalf_ = nullptr;
+    std::vector<double>* plasticStrain_ = nullptr;
+    std::vector<double>* temperature_ = nullptr;
+    std::vector<Tensor<Dim>> velocityGradient_;
+    std::vector<SymmTensor<Dim>> dtaudt_;
 
     // Rates f^k and per-particle scheme coefficients (solver scratch, not fields).
     std::vector<Vector<Dim>> dvdt_;
@@ -102,7 +120,8 @@ private:
     bool ratesValid_ = false;
     bool started_ = false;
     double previousDeltaT_ = 0;
-    double neighbourSeconds_ = 0, eosSeconds_ = 0, sumSeconds_ = 0, rateSeconds_ = 0, integrateSeconds_ = 0;
+    double neighbourSeconds_ = 0, eosSeconds_ = 0, sumSeconds_ = 0, rateSeconds_ = 0, integrateSeconds_ = 0,
+           strengthSeconds_ = 0;
 };
 
 extern template class SphSolver<1>;
