@@ -16,6 +16,8 @@
 // rear and front are the target's faces as distances along `direction` (here y = -4 mm and 0).
 #include "functionObjects/DebrisCloud.hpp"
 
+#include "particles/ParticleSetBase.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
