@@ -42,3 +42,15 @@ lastRow() { grep -- "$2" "$1" | tail -n 1; }
 # Float comparison a < b; relErr a b = |a - b|/|b|.
 less() { awk -v a="$1" -v b="$2" 'BEGIN { exit !(a + 0 < b + 0) }'; }
 relErr() { awk -v a="$1" -v b="$2" 'BEGIN { d = (a - b) / b; if (d < 0) d = -d; printf "%.4g", d }'; }
+
+# runTutorial <name>: a copy of tutorials/impactSph/<name> run by its own Allrun (which finds
+# bin/tools/RunFunctions three levels up and the applications in $MFDYN_BUILD); prints its path.
+runTutorial() {
+    local dest="$WORK/tutorials/impactSph/$1"
+    mkdir -p "$WORK/tutorials/impactSph"
+    [ -e "$WORK/bin" ] || ln -s "$SOURCE/../../../bin" "$WORK/bin"
+    cp -r "$TUTORIALS/$1" "$dest"
+    (cd "$dest" && ./Allclean > /dev/null 2>&1 || true)
+    MFDYN_BUILD="$BUILD" "$dest/Allrun" > "$dest/log.Allrun" 2>&1 || fail "$1/Allrun failed: $(tail -n 20 "$dest/log.Allrun")"
+    echo "$dest"
+}
