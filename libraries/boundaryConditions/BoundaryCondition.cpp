@@ -1,0 +1,57 @@
+#include "boundaryConditions/BoundaryCondition.hpp"
+
+#include "core/Parallel.hpp"
+
+#include <sstream>
+
+namespace mfdyn {
+
+namespace {
+
+// The last component of "boundaryConditions/chamber".
+std::string lastScope(const std::string& scope) {
+    const auto slash = scope.find_last_of('/');
+    return slash == std::string::npos ? scope : scope.substr(slash + 1);
+}
+
+}  // namespace
+
+template <int Dim>
+BoundaryCondition<Dim>::BoundaryCondition(const Dictionary& dict, const ParticleSet<Dim>& particles,
+                                          bool allByDefault)
+    : selection_(dict, particles, allByDefault),
+      name_(lastScope(dict.scope())),
+      type_(dict.get<std::string>("type")) {
+    if (auto release = dict.getOptional<double>("releaseTime")) {
+        if (!(*release >= 0.0)) throw dict.error("releaseTime", "expected a time >= 0 [s]");
+        releaseTime_ = *release;
+    }
+}
+
+template <int Dim>
+BoundaryCondition<Dim>::~BoundaryCondition() = default;
+
+template <int Dim>
+std::string BoundaryCondition<Dim>::describe() const {
+    std::string s = name_ + ": " + type_ + " on " + selection_.describe() + ", " +
+                    std::to_string(selection_.size()) + " particles";
+    if (releaseTime_ < std::numeric_limits<double>::infinity()) {
+        std::ostringstream release;
+        release << ", released at t = " << releaseTime_ << " s";  // 0.007, not 0.007000
+        s += release.str();
+    }
+    return s;
+}
+
+template <int Dim>
+void BoundaryCondition<Dim>::assignOnSelection(std::vector<VectorType>& values,
+                                               const VectorType& value) const {
+    const auto& idx = selection_.indices();
+    parallelFor(idx.size(), [&](std::size_t k) { values[idx[k]] = value; });
+}
+
+template class BoundaryCondition<1>;
+template class BoundaryCondition<2>;
+template class BoundaryCondition<3>;
+
+}  // namespace mfdyn

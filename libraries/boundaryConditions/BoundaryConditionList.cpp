@@ -1,0 +1,79 @@
+#include "boundaryConditions/BoundaryConditionList.hpp"
+
+namespace mfdyn {
+
+template <int Dim>
+BoundaryConditionList<Dim>::BoundaryConditionList(const Dictionary& dict, const ParticleSet<Dim>& particles) {
+    const Dictionary& list = dict.isDict("boundaryConditions") ? dict.subDict("boundaryConditions") : dict;
+    for (const auto& entry : list.entries()) {
+        if (!entry->isDict())
+            throw list.error(entry->key, "expected a boundary condition `" + entry->key +
+                                             " { type ...; }`, found a plain entry");
+        entry->read = true;
+        conditions_.push_back(BoundaryCondition<Dim>::New(*entry->dict, particles));
+    }
+}
+
+template <int Dim>
+const BoundaryCondition<Dim>* BoundaryConditionList<Dim>::find(const std::string& name) const {
+    for (const auto& c : conditions_)
+        if (c->name() == name) return c.get();
+    return nullptr;
+}
+
+template <int Dim>
+bool BoundaryConditionList<Dim>::makesGhosts() const {
+    for (const auto& c : conditions_)
+        if (c->makesGhosts()) return true;
+    return false;
+}
+
+template <int Dim>
+std::string BoundaryConditionList<Dim>::summary() const {
+    std::string s;
+    for (const auto& c : conditions_) s += c->describe() + "\n";
+    return s;
+}
+
+template <int Dim>
+void BoundaryConditionList<Dim>::updateSelections(const ParticleSet<Dim>& particles) {
+    for (auto& c : conditions_) c->updateSelection(particles);
+}
+
+template <int Dim>
+GhostBlock<Dim> BoundaryConditionList<Dim>::ghosts(const ParticleSet<Dim>& particles,
+                                                   const std::vector<VectorType>& velocity, double hMax,
+                                                   double t) const {
+    GhostBlock<Dim> block;
+    for (const auto& c : conditions_) c->appendGhosts(particles, velocity, hMax, t, block);
+    return block;
+}
+
+template <int Dim>
+void BoundaryConditionList<Dim>::constrainAcceleration(ParticleSet<Dim>& particles,
+                                                       std::vector<VectorType>& acceleration, double t) {
+    for (auto& c : conditions_) c->constrainAcceleration(particles, acceleration, t);
+}
+
+template <int Dim>
+void BoundaryConditionList<Dim>::constrainVelocity(ParticleSet<Dim>& particles,
+                                                   std::vector<VectorType>& velocity, double t) {
+    for (auto& c : conditions_) c->constrainVelocity(particles, velocity, t);
+}
+
+template <int Dim>
+void BoundaryConditionList<Dim>::constrainVelocity(ParticleSet<Dim>& particles, double t) {
+    if (conditions_.empty()) return;
+    constrainVelocity(particles, particles.template requireField<VectorType>("velocity"), t);
+}
+
+template <int Dim>
+void BoundaryConditionList<Dim>::constrainPosition(ParticleSet<Dim>& particles, double t) {
+    for (auto& c : conditions_) c->constrainPosition(particles, t);
+}
+
+template class BoundaryConditionList<1>;
+template class BoundaryConditionList<2>;
+template class BoundaryConditionList<3>;
+
+}  // namespace mfdyn

@@ -1,0 +1,65 @@
+#pragma once
+// All boundary conditions of a case, from constant/boundaryConditions:
+//
+//     boundaryConditions
+//     {
+//         chamber { type fixed; regions (wall); }
+//         tubeEnd { type mirrorPlane; point (0 0 0); normal (1 0 0); }
+//     }
+//
+// built in the order written, and applied in that order by each hook (a later condition wins
+// where two act on one particle, so write the overriding one last). The hooks and the order a
+// solver calls them in within a step are those of BoundaryCondition.hpp:
+//
+//     bcs.updateSelections(particles);                 // only after a reorder / resize
+//     GhostBlock<Dim> ghosts = bcs.ghosts(particles, v, hMax, t);   // -> neighbour search
+//     ... compute rates a ...
+//     bcs.constrainAcceleration(particles, a, t);
+//     ... v += a dt (each kick) ...;   bcs.constrainVelocity(particles, v, t);
+//     ... x += v dt ...;               bcs.constrainPosition(particles, t);
+//
+// A case without the file, or with an empty list, has no boundary conditions (free surfaces).
+#include "boundaryConditions/BoundaryCondition.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mfdyn {
+
+template <int Dim>
+class BoundaryConditionList {
+public:
+    using VectorType = Vector<Dim>;
+
+    BoundaryConditionList() = default;
+    // `dict` holds the `boundaryConditions` sub-dictionary (the file), or is that sub-dictionary.
+    BoundaryConditionList(const Dictionary& dict, const ParticleSet<Dim>& particles);
+
+    std::size_t size() const { return conditions_.size(); }
+    bool empty() const { return conditions_.empty(); }
+    BoundaryCondition<Dim>& operator[](std::size_t k) { return *conditions_[k]; }
+    const BoundaryCondition<Dim>& operator[](std::size_t k) const { return *conditions_[k]; }
+    // Null when no condition has that name.
+    const BoundaryCondition<Dim>* find(const std::string& name) const;
+    bool makesGhosts() const;
+    // One line per condition, for the log.
+    std::string summary() const;
+
+    void updateSelections(const ParticleSet<Dim>& particles);
+    GhostBlock<Dim> ghosts(const ParticleSet<Dim>& particles, const std::vector<VectorType>& velocity,
+                           double hMax, double t) const;
+    void constrainAcceleration(ParticleSet<Dim>& particles, std::vector<VectorType>& acceleration, double t);
+    void constrainVelocity(ParticleSet<Dim>& particles, std::vector<VectorType>& velocity, double t);
+    void constrainVelocity(ParticleSet<Dim>& particles, double t);
+    void constrainPosition(ParticleSet<Dim>& particles, double t);
+
+private:
+    std::vector<std::unique_ptr<BoundaryCondition<Dim>>> conditions_;
+};
+
+extern template class BoundaryConditionList<1>;
+extern template class BoundaryConditionList<2>;
+extern template class BoundaryConditionList<3>;
+
+}  // namespace mfdyn

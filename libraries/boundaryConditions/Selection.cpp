@@ -1,0 +1,114 @@
+#include "boundaryConditions/Selection.hpp"
+
+#include <algorithm>
+#include <unordered_map>
+
+namespace mfdyn {
+
+template <int Dim>
+Selection<Dim>::Selection(const Dictionary& dict, const ParticleSet<Dim>& particles, bool allByDefault) {
+    const bool hasRegions = dict.found("regions");
+    const bool hasShape = dict.found("shape");
+    const bool allGiven = dict.found("all");
+    all_ = dict.getOrDefault<bool>("all", false);
+    if (all_ && (hasRegions || hasShape))
+        throw dict.error("all", "`all yes` selects every particle; remove `regions` and `shape` or `all`");
+    if (allGiven && !all_ && !hasRegions && !hasShape)
+        throw dict.error("all", "`all no` needs `regions (...)` or `shape { ... }`");
+    if (!allGiven && !hasRegions && !hasShape) {
+        if (!allByDefault)
+            throw InputError(dict.where(), dict.scope(),
+                             "no particles selected: give `regions (name ...);`, `shape { type ...; }` or "
+                             "`all yes;`");
+        all_ = true;
+    }
+    reselect_ = dict.getOrDefault<bool>("reselect", false);
+
+    if (hasRegions) {
+        regionNames_ = dict.get<std::vector<std::string>>("regions");
+        if (regionNames_.empty()) throw dict.error("regions", "the list of regions is empty");
+        for (const auto& name : regionNames_) {
+            const auto& known = particles.regionNames;
+            const auto it = std::find(known.begin(), known.end(), name);
+            if (it == known.end()) {
+                std::string list;
+                for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+                std::string message = "unknown region '" + name + "'";
+                const std::string guess = closestMatch(name, known);
+                if (!guess.empty()) message += "; did you mean '" + guess + "'?";
+                message += " Regions in the particle file: " + (list.empty() ? std::string("(none)") : list);
+                throw dict.error("regions", message);
+            }
+            regionIds_.push_back(std::int64_t(it - known.begin()));
+        }
+    }
+    if (hasShape) {
+        const Dictionary& shapeDict = dict.subDict("shape");
+        shape_ = Shape::New(shapeDict, Dim);
+        shapeType_ = shapeDict.get<std::string>("type");
+    }
+    resolve(particles);
+}
+
+template <int Dim>
+Selection<Dim>::~Selection() = default;
+
+template <int Dim>
+void Selection<Dim>::resolve(const ParticleSet<Dim>& particles) {
+    const std::size_t n = particles.size();
+    indices_.clear();
+    if (all_) {
+        indices_.resize(n);
+        for (std::size_t i = 0; i < n; ++i) indices_[i] = i;
+    } else {
+        const auto& x = particles.position();
+        const auto* region = regionIds_.empty() ? nullptr : &particles.region();
+        for (std::size_t i = 0; i < n; ++i) {
+            if (region && std::find(regionIds_.begin(), regionIds_.end(), (*region)[i]) == regionIds_.end())
+                continue;
+            if (shape_ && !shape_->inside(x[i].data())) continue;
+            indices_.push_back(i);
+        }
+    }
+    const auto& ids = particles.globalId();
+    globalIds_.resize(indices_.size());
+    for (std::size_t k = 0; k < indices_.size(); ++k) globalIds_[k] = ids[indices_[k]];
+}
+
+template <int Dim>
+void Selection<Dim>::update(const ParticleSet<Dim>& particles) {
+    if (all_ || reselect_) return resolve(particles);
+    // Same particles, new places: a map from globalId of the selected ones to their new index.
+    std::unordered_map<std::int64_t, bool> wanted;
+    wanted.reserve(globalIds_.size());
+    for (auto id : globalIds_) wanted.emplace(id, true);
+    const auto& ids = particles.globalId();
+    indices_.clear();
+    std::vector<std::int64_t> kept;
+    for (std::size_t i = 0; i < ids.size(); ++i)
+        if (wanted.count(ids[i])) {
+            indices_.push_back(i);
+            kept.push_back(ids[i]);
+        }
+    // Particles removed by the solver (eroded, left the domain) drop out of the selection.
+    globalIds_ = std::move(kept);
+}
+
+template <int Dim>
+std::string Selection<Dim>::describe() const {
+    if (all_) return "all particles";
+    std::string s;
+    if (!regionNames_.empty()) {
+        s = "regions (";
+        for (std::size_t k = 0; k < regionNames_.size(); ++k) s += (k ? " " : "") + regionNames_[k];
+        s += ")";
+    }
+    if (shape_) s += (s.empty() ? "" : " inside ") + std::string("shape ") + shapeType_;
+    return s;
+}
+
+template class Selection<1>;
+template class Selection<2>;
+template class Selection<3>;
+
+}  // namespace mfdyn

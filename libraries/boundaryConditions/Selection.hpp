@@ -1,0 +1,65 @@
+#pragma once
+// The particles a boundary condition acts on, read from the condition's own dictionary:
+//
+//     regions (wall lid);                          particles of these named regions
+//     shape   { type box; min (0 0 0); max (1 0.1 1); }   particles inside the shape (Shape::New)
+//     all     yes;                                 every particle
+//
+// `regions` and `shape` together select their intersection (the part of a region inside a box).
+// A condition that may act on everything without a selection (a plane, which selects by its own
+// side test) passes allByDefault; one that freezes particles (fixed) does not, so a forgotten
+// `regions` is an error rather than a case in which nothing moves.
+//
+// The selection is resolved once, to an index list. Indices go stale when the solver reorders
+// particles (cell sorting) or changes their number; update() then
+//   - keeps the same particles, found again by globalId (default), or
+//   - with `reselect yes;`, evaluates the criteria again on the current positions, for an
+//     Updated-Lagrangian run whose boundary is a fixed region of space rather than fixed particles.
+#include "core/Dictionary.hpp"
+#include "geometry/Shape.hpp"
+#include "particles/ParticleSet.hpp"
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace mfdyn {
+
+template <int Dim>
+class Selection {
+public:
+    Selection(const Dictionary& dict, const ParticleSet<Dim>& particles, bool allByDefault);
+    Selection(Selection&&) noexcept = default;
+    Selection& operator=(Selection&&) noexcept = default;
+    ~Selection();
+
+    // Indices into the particle set, ascending.
+    const std::vector<std::size_t>& indices() const { return indices_; }
+    std::size_t size() const { return indices_.size(); }
+    bool selectsAll() const { return all_; }
+
+    // Refresh after a reorder or a change in particle count (see the header comment).
+    void update(const ParticleSet<Dim>& particles);
+    // Evaluate the criteria on the current state, whatever `reselect` says.
+    void resolve(const ParticleSet<Dim>& particles);
+
+    // "regions (wall)", "shape box", "all particles": for the log.
+    std::string describe() const;
+
+private:
+    bool all_ = false;
+    bool reselect_ = false;
+    std::vector<std::string> regionNames_;
+    std::vector<std::int64_t> regionIds_;
+    std::unique_ptr<Shape> shape_;
+    std::string shapeType_;
+    std::vector<std::size_t> indices_;
+    std::vector<std::int64_t> globalIds_;  // of indices_, for update() by identity
+};
+
+extern template class Selection<1>;
+extern template class Selection<2>;
+extern template class Selection<3>;
+
+}  // namespace mfdyn
