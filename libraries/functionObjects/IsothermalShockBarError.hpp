@@ -1,0 +1,27 @@
+#pragma once
+#include "functionObjects/FunctionObject.hpp"
+#include "verification/IsothermalShockBar.hpp"
+
+#include <memory>
+
+namespace mfdyn {
+
+class IsothermalShockBarError final : public FunctionObject {
+public:
+    IsothermalShockBarError(const Dictionary& dict, const std::string& name, const RunContext& context);
+    void write() override;
+    std::vector<ErrorNorm> errorNorms() const override { return norms_.latest(); }
+    std::vector<std::string> summary() const override { return summary_; }
+
+private:
+    std::unique_ptr<IsothermalShockBar> exact_;
+    double t0_;
+    double from_, to_;
+    double frontWindow_;
+    std::vector<std::string> fields_;
+    ErrorNormWriter norms_;
+    std::unique_ptr<CsvFile> plateaus_, fronts_, contact_;
+    std::vector<std::string> summary_;
+};
+
+}  // namespace mfdyn
