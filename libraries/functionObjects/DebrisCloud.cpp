@@ -14,6 +14,8 @@
 //     debris { type debrisCloud; direction (0 -1); rear 0.004; front 0; targetRegions (plate); }
 //
 // rear and front are the target's faces as distances along `direction` (here y = -4 mm and 0).
+// Writes debrisCloud.csv (time, length, width, lengthOverWidth, holeDiameter, debrisParticles)
+// and, for pictures, cloud_<time>.csv (particle positions and region) at each write.
 #include "functionObjects/DebrisCloud.hpp"
 
 #include "particles/ParticleSetBase.hpp"
@@ -117,6 +119,18 @@ void DebrisCloud::write() {
         hole = all.empty() ? NAN : 2 * quantile(all, trim_);
     }
     const double ratio = width > 0 ? length / width : NAN;
+
+    // The cloud itself, for a picture of its shape: cloud_<time>.csv with position and region.
+    std::vector<std::string> columns{"x", "y"};
+    if (dim == 3) columns.push_back("z");
+    columns.push_back("region");
+    CsvFile cloud(outputFile("cloud_" + context().time().timeName() + ".csv"), columns);
+    std::vector<double> row(dim + 1);
+    for (std::size_t i = 0; i < fields.size(); ++i) {
+        for (int d = 0; d < dim; ++d) row[d] = x.component(i, d);
+        row[dim] = region.component(i, 0);
+        cloud.row(row);
+    }
     csv_->row({context().time().value(), length, width, ratio, hole, double(debrisS.size())});
     char line[200];
     std::snprintf(line, sizeof line, "debris length %.4g m, width %.4g m, L/W %.3f, hole diameter %.4g m (%zu particles)",

@@ -28,6 +28,7 @@
 #include "core/Parallel.hpp"
 #include "solver/SolverRun.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -216,7 +217,16 @@ void SphSolver<Dim>::updateNeighbours() {
     Stopwatch watch;
     std::vector<double> radius(x_.size());
     for (std::size_t i = 0; i < x_.size(); ++i) radius[i] = kernel_->supportRadius(h_[i]);
-    neighbours_ = search_.build(x_, radius);
+    if (!verlet_) {
+        std::vector<double> sorted(radius);
+        std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
+        const double median = sorted.empty() ? 1.0 : sorted[sorted.size() / 2];
+        const double skin = properties_.getOrDefault<double>("neighbourSkin", 0.2) * median;
+        verlet_ = std::make_unique<VerletList<Dim>>(skin);
+    }
+    if (verlet_->update(x_, radius)) ++rebuilds_;
+    ++neighbourUpdates_;
+    neighbours_.list = &verlet_->candidates();
     neighbourSeconds_ += watch.seconds();
 }
 
@@ -541,7 +551,7 @@ void SphSolver<Dim>::restoreSolverState(const Dictionary& state) {
 
 template <int Dim>
 std::vector<std::pair<std::string, double>> SphSolver<Dim>::phaseTimes() const {
-    return {{"updateNeighbours", neighbourSeconds_},
+    return {{"updateNeighbours (" + std::to_string(rebuilds_) + " rebuilds)", neighbourSeconds_},
             {"densitySums", sumSeconds_},
             {"equationOfState", eosSeconds_},
             {"computeRates", rateSeconds_},

@@ -11,6 +11,7 @@
 //     smoothingLength { type massDensity; eta 1.2; }
 //     dissipation     { type riemann; velocity (1 2); density (0.5 2); energy (0.1 2); }
 //     densityRateLimit 0.2;   // Δt ≤ ξ ρ/|dρ/dt| as well as the Courant limit (0: off)
+//     neighbourSkin    0.2;   // Verlet skin as a fraction of the initial median support radius
 //
 // constant/materialProperties:  materials { name { equationOfState { type idealGas; gamma 1.4; }
 //                                                  strength { type vonMises; } } }   // strength optional
@@ -27,6 +28,7 @@
 #include "materials/equationOfState/EquationOfState.hpp"
 #include "materials/strength/Strength.hpp"
 #include "particles/NeighbourSearch.hpp"
+#include "particles/VerletList.hpp"
 #include "solver/Solver.hpp"
 #include "sph/DensityScheme.hpp"
 #include "sph/Dissipation.hpp"
@@ -115,8 +117,15 @@ private:
     // Rates f^k and per-particle scheme coefficients (solver scratch, not fields).
     std::vector<Vector<Dim>> dvdt_;
     std::vector<double> drhodt_, dedt_, a_, b_, cc_;
-    NeighbourSearch<Dim> search_;
-    NeighbourList neighbours_;
+    // Candidate pairs within the support plus a skin, rebuilt only when particles have moved (or h
+    // grown) by more than the skin allows; pairs beyond the support cost a kernel evaluation
+    // that returns zero. neighbours_ points at the current list.
+    std::unique_ptr<VerletList<Dim>> verlet_;
+    struct Rows {
+        const NeighbourList* list;
+        auto operator[](std::size_t i) const { return (*list)[i]; }
+    } neighbours_{nullptr};
+    std::size_t rebuilds_ = 0, neighbourUpdates_ = 0;
     bool ratesValid_ = false;
     bool started_ = false;
     double previousDeltaT_ = 0;
