@@ -38,6 +38,8 @@ public:
     virtual std::vector<const Dictionary*> dictionaries() const { return {}; }
     // Seconds spent in each named phase, for the summary.
     virtual std::vector<std::pair<std::string, double>> phaseTimes() const { return {}; }
+    // Extra lines for the summary (pair interactions per second, ...), given the time-loop seconds.
+    virtual std::vector<std::string> summary(double /*loopSeconds*/) const { return {}; }
 
     const Case& runCase() const override;
     const Time& time() const override;

@@ -257,6 +257,7 @@ void SolverRun::summary(const Solver& solver, double steppingSeconds, double sta
                       steppingSeconds > 0 ? 100 * seconds / steppingSeconds : 0.0);
         s << line;
     }
+    for (const auto& extra : solver.summary(steppingSeconds)) s << "    " << extra << "\n";
     if (Log::warningCount()) s << "    warnings             " << Log::warningCount() << "\n";
     Log::info(s.str());
 }

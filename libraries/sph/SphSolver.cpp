@@ -31,6 +31,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <sstream>
 
@@ -103,6 +104,14 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
       material_(particles_->integerField("material")) {
     readMaterials();
     initialiseFields();
+    if (std::filesystem::exists(run.runCase().constantFile("boundaryConditions"))) {
+        boundaryDict_ = run.runCase().readConstant("boundaryConditions");
+        boundaries_ = BoundaryConditionList<Dim>(*boundaryDict_, *particles_);
+        if (boundaries_.makesGhosts())
+            throw boundaryDict_->error("boundaryConditions", "mirrorPlane ghost layers are not yet coupled to impactSph's "
+                                                             "sums; use symmetryPlane or rigidPlanarWall");
+        Log::info("Boundary conditions:\n" + boundaries_.summary());
+    }
 }
 
 template <int Dim>
@@ -383,6 +392,8 @@ void SphSolver<Dim>::ensureRates() {
         computeStressRate();
     }
     computeRates();
+    pairInteractions_ += double(neighbours_.list->pairCount());
+    if (!boundaries_.empty()) boundaries_.constrainAcceleration(*particles_, dvdt_, time().value());
     ratesValid_ = true;
 }
 
@@ -492,6 +503,12 @@ void SphSolver<Dim>::step(double dt) {
         if (plasticStrain_) *plasticStrain_ = std::move(history);
         if (temperature_) *temperature_ = std::move(heat);
     }
+    if (!boundaries_.empty()) {
+        const double t = time().value();
+        boundaries_.constrainVelocity(*particles_, *vHalf_, t + 0.5 * dt);
+        boundaries_.constrainVelocity(*particles_, v_, t + dt);
+        boundaries_.constrainPosition(*particles_, t + dt);
+    }
     started_ = true;
     previousDeltaT_ = dt;
     ratesValid_ = false;
@@ -557,6 +574,16 @@ std::vector<std::pair<std::string, double>> SphSolver<Dim>::phaseTimes() const {
             {"computeRates", rateSeconds_},
             {"strength", strengthSeconds_},
             {"integrate", integrateSeconds_}};
+}
+
+template <int Dim>
+std::vector<std::string> SphSolver<Dim>::summary(double loopSeconds) const {
+    char line[160];
+    std::snprintf(line, sizeof line, "pair interactions/s  %.4g (%.1f candidate pairs per particle, %zu list rebuilds in %zu steps)",
+                  loopSeconds > 0 ? pairInteractions_ / loopSeconds : 0.0,
+                  neighbourUpdates_ && !x_.empty() ? pairInteractions_ / double(neighbourUpdates_) / double(x_.size()) : 0.0,
+                  rebuilds_, neighbourUpdates_);
+    return {line};
 }
 
 template class SphSolver<1>;

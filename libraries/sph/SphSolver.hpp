@@ -15,6 +15,10 @@
 //
 // constant/materialProperties:  materials { name { equationOfState { type idealGas; gamma 1.4; }
 //                                                  strength { type vonMises; } } }   // strength optional
+// constant/boundaryConditions (optional; libraries/boundaryConditions): fixed, prescribedVelocity,
+// symmetryPlane, rigidPlanarWall on regions or shapes; applied to accelerations after the rates,
+// to velocities after each leapfrog update and to positions after the drift. (mirrorPlane ghosts
+// are not yet taken into the SPH sums: such a case stops with a message.)
 // Particles carry `material` (an index into the particle file's material names) or, without it,
 // take the material named like their region, or the only material there is.
 //
@@ -23,6 +27,7 @@
 // numberDensity when the smoothing-length law needs it; the leapfrog's half-step copies;
 // deviatoricStress (and plasticStrain, temperature as the laws ask) only when a material has a
 // strength law other than none: a hydrodynamic scene carries no stress and runs no stress terms.
+#include "boundaryConditions/BoundaryConditionList.hpp"
 #include "kernels/Kernel.hpp"
 #include "kernels/KernelEvaluator.hpp"
 #include "materials/equationOfState/EquationOfState.hpp"
@@ -51,8 +56,13 @@ public:
     std::optional<double> internalEnergy() const override;
     std::string solverState() const override;
     void restoreSolverState(const Dictionary& state) override;
-    std::vector<const Dictionary*> dictionaries() const override { return {&properties_, &materialProperties_}; }
+    std::vector<const Dictionary*> dictionaries() const override {
+        std::vector<const Dictionary*> d{&properties_, &materialProperties_};
+        if (boundaryDict_) d.push_back(&*boundaryDict_);
+        return d;
+    }
     std::vector<std::pair<std::string, double>> phaseTimes() const override;
+    std::vector<std::string> summary(double loopSeconds) const override;
 
 private:
     struct Material {
@@ -121,11 +131,14 @@ private:
     // grown) by more than the skin allows; pairs beyond the support cost a kernel evaluation
     // that returns zero. neighbours_ points at the current list.
     std::unique_ptr<VerletList<Dim>> verlet_;
+    std::optional<Dictionary> boundaryDict_;
+    BoundaryConditionList<Dim> boundaries_;
     struct Rows {
         const NeighbourList* list;
         auto operator[](std::size_t i) const { return (*list)[i]; }
     } neighbours_{nullptr};
     std::size_t rebuilds_ = 0, neighbourUpdates_ = 0;
+    double pairInteractions_ = 0;  // candidate pairs visited by the force loop, summed over steps
     bool ratesValid_ = false;
     bool started_ = false;
     double previousDeltaT_ = 0;
