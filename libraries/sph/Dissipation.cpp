@@ -49,6 +49,9 @@ public:
         p_.alpha = dict.getOrDefault<double>("alpha", 1.0);
         p_.beta = dict.getOrDefault<double>("beta", 2.0);
         p_.balsara = dict.getOrDefault<bool>("balsara", false);
+        // The artificial mass flux combines with any viscosity (the elliptical drop of Zisis 2017
+        // §4.5.1 pairs Monaghan's viscosity with a_ρ = 0.5, b_ρ = 0); off unless given.
+        readPair(dict, "density", p_.arho, p_.brho, 0.0, 0.0);
         if (p_.alpha < 0 || p_.beta < 0) throw dict.error("alpha", "alpha and beta must be non-negative");
     }
     DissipationParameters parameters() const override { return p_; }

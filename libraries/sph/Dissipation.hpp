@@ -2,7 +2,7 @@
 // Artificial dissipation of an SPH shock solver, chosen by name:
 //
 //   dissipation { type riemann; velocity (1 2); density (0.5 2); energy (0.1 2); signal riemann; pairs approaching; }
-//   dissipation { type monaghanGingold; alpha 1; beta 2; balsara no; }
+//   dissipation { type monaghanGingold; alpha 1; beta 2; balsara no; density (0.5 0); }  // + optional mass flux
 //   dissipation { type none; }
 //
 // riemann (Zisis 2017 §4.2, eqs. 4.21–4.28; Price 2008), for each pair with v_ij·r̂_ij ≤ 0 (or all

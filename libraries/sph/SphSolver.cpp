@@ -55,6 +55,16 @@ std::vector<double>& requireScalar(ParticleSet<Dim>& p, const std::string& name,
     return p.scalarField(name);
 }
 
+// `momentum variational` (default: matched to the density scheme, conservative) or `difference`:
+// dv_i/dt = −ρ_i⁻¹ Σ_j (m_j/ρ_j)(P_j − P_i) ∇_iW_ij(h_i), free of the K-error of §7 but not
+// momentum-conserving (Zisis 2017 §2.4: rejected for shocks, offered for comparison).
+bool readMomentumForm(const Dictionary& properties) {
+    const std::string form = properties.getOrDefault<std::string>("momentum", "variational");
+    if (form != "variational" && form != "difference")
+        throw properties.error("momentum", "'" + form + "' is not valid; valid choices: variational | difference");
+    return form == "difference";
+}
+
 std::string hex(double x) {
     char s[64];
     std::snprintf(s, sizeof s, "%a", x);
@@ -94,6 +104,7 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
       diss_(Dissipation::New(properties_.subDict("dissipation"))->parameters()),
       densityRateLimit_(properties_.getOrDefault<double>("densityRateLimit", 0.0)),
       omegaMin_(properties_.subDict("densityScheme").getOrDefault<double>("omegaMin", 0.5)),
+      differenceForm_(readMomentumForm(properties_)),
       x_(particles_->position()),
       v_(particles_->vectorField("velocity")),
       m_(requireScalar(*particles_, "mass", "particle masses")),
@@ -291,6 +302,7 @@ void SphSolver<Dim>::computeRates() {
     const DissipationParameters d = diss_;
     const bool riemann = d.kind == DissipationParameters::Kind::riemann;
     const bool monaghan = d.kind == DissipationParameters::Kind::monaghanGingold;
+    const bool differenceForm = differenceForm_;
     static const std::vector<double> ones;
     auto omega = [&](std::size_t i) { return omega_ ? (*omega_)[i] : 1.0; };
     auto energy = [&](std::size_t i) { return e_ ? (*e_)[i] : 0.0; };
@@ -334,7 +346,10 @@ void SphSolver<Dim>::computeRates() {
             const Vector<Dim> vij = v_[i] - v_[j];
             const double vr = vij.dot(rhat);
             continuity += b_[j] * vr * dWi;
-            force -= (pressureI * b_[j] * dWi + a_[j] * b_[i] * p_[j] / omega(j) * dWj) * rhat;
+            if (differenceForm)
+                force -= (m_[i] / rhoi * m_[j] / rho_[j] * (p_[j] - Pi) * dWi) * rhat;
+            else
+                force -= (pressureI * b_[j] * dWi + a_[j] * b_[i] * p_[j] / omega(j) * dWj) * rhat;
 
             if (riemann && (d.allPairs || vr <= 0)) {
                 const double rhoBar = 0.5 * (rhoi + rho_[j]);
@@ -356,6 +371,10 @@ void SphSolver<Dim>::computeRates() {
                 const double F = 0.5 * (dWi + dWj);
                 force -= (m_[i] * m_[j] * viscous * F) * rhat;
                 heating += 0.5 * m_[j] * viscous * vr * F;
+                if (d.arho > 0) {
+                    const double signal = 0.5 * (ci + c_[j]) - 0.5 * d.brho * vr;
+                    massFlux += m_[j] * d.arho * (Pi - p_[j]) / (0.5 * (rhoi + rho_[j]) * signal) * F;
+                }
             }
         }
         const double drho = cc_[i] / oi * continuity;

@@ -12,6 +12,7 @@
 //     dissipation     { type riemann; velocity (1 2); density (0.5 2); energy (0.1 2); }
 //     densityRateLimit 0.2;   // Δt ≤ ξ ρ/|dρ/dt| as well as the Courant limit (0: off)
 //     neighbourSkin    0.2;   // Verlet skin as a fraction of the initial median support radius
+//     momentum         variational;   // or difference (non-conservative, for comparison)
 //
 // constant/materialProperties:  materials { name { equationOfState { type idealGas; gamma 1.4; }
 //                                                  strength { type vonMises; } } }   // strength optional
@@ -96,6 +97,7 @@ private:
     DissipationParameters diss_;
     double densityRateLimit_;
     double omegaMin_;
+    bool differenceForm_;
     std::vector<Material> materials_;
     bool needsEnergy_ = false;
     bool anyStrength_ = false;
