@@ -65,6 +65,17 @@ bool readMomentumForm(const Dictionary& properties) {
     return form == "difference";
 }
 
+// `integrator leapfrog` (Zisis 2017 eqs. 4.29–4.34, one rate evaluation a step) or
+// `predictorCorrector` (the midpoint rule, two evaluations a step, no state carried between steps):
+//   U* = U^n + f(x^n, U^n) Δt/2,  x* = x^n + v^n Δt/2;   f* = f(x*, U*);
+//   U^{n+1} = U^n + f* Δt,        x^{n+1} = x^n + (v^n + f_v* Δt/2) Δt.
+bool readIntegrator(const Dictionary& properties) {
+    const std::string type = properties.getOrDefault<std::string>("integrator", "leapfrog");
+    if (type != "leapfrog" && type != "predictorCorrector")
+        throw properties.error("integrator", "'" + type + "' is not valid; valid choices: leapfrog | predictorCorrector");
+    return type == "predictorCorrector";
+}
+
 std::string hex(double x) {
     char s[64];
     std::snprintf(s, sizeof s, "%a", x);
@@ -105,6 +116,7 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
       densityRateLimit_(properties_.getOrDefault<double>("densityRateLimit", 0.0)),
       omegaMin_(properties_.subDict("densityScheme").getOrDefault<double>("omegaMin", 0.5)),
       differenceForm_(readMomentumForm(properties_)),
+      predictorCorrector_(readIntegrator(properties_)),
       x_(particles_->position()),
       v_(particles_->vectorField("velocity")),
       m_(requireScalar(*particles_, "mass", "particle masses")),
@@ -201,12 +213,15 @@ void SphSolver<Dim>::initialiseFields() {
     }
     if (scheme_->gradH()) omega_ = &particles_->scalarField("omega");
     if (hLaw_->needsNumberDensity() || scheme_->gradH()) number_ = &particles_->scalarField("numberDensity");
-    vHalf_ = &particles_->vectorField("velocityHalfStep");
-    if (!scheme_->summation()) rhoHalf_ = &particles_->scalarField("densityHalfStep");
-    if (needsEnergy_) eHalf_ = &particles_->scalarField("specificInternalEnergyHalfStep");
+    // The leapfrog carries the half-step state between steps; the predictor-corrector does not.
+    if (!predictorCorrector_) {
+        vHalf_ = &particles_->vectorField("velocityHalfStep");
+        if (!scheme_->summation()) rhoHalf_ = &particles_->scalarField("densityHalfStep");
+        if (needsEnergy_) eHalf_ = &particles_->scalarField("specificInternalEnergyHalfStep");
+    }
     if (anyStrength_) {
         tau_ = &particles_->symmTensorField("deviatoricStress");
-        tauHalf_ = &particles_->symmTensorField("deviatoricStressHalfStep");
+        if (!predictorCorrector_) tauHalf_ = &particles_->symmTensorField("deviatoricStressHalfStep");
         bool plastic = false, thermal = false;
         for (const auto& m : materials_) {
             if (!m.strength) continue;
@@ -479,7 +494,61 @@ TimeStepVote SphSolver<Dim>::stableTimeStep() {
 }
 
 template <int Dim>
+void SphSolver<Dim>::stepPredictorCorrector(double dt) {
+    ensureRates();
+    Stopwatch watch;
+    const std::size_t n = x_.size();
+    const bool continuity = !scheme_->summation();
+    const auto x0 = x_;
+    const auto v0 = v_;
+    const auto rho0 = rho_;
+    std::vector<double> e0;
+    if (e_) e0 = *e_;
+    std::vector<SymmTensor<Dim>> tau0;
+    if (tau_) tau0 = *tau_;
+    auto advance = [&](double span) {
+        parallelFor(n, [&](std::size_t i) {
+            x_[i] = x0[i] + span * (v0[i] + 0.5 * span * dvdt_[i]);
+            v_[i] = v0[i] + span * dvdt_[i];
+            if (continuity) rho_[i] = rho0[i] + span * drhodt_[i];
+            if (e_) (*e_)[i] = e0[i] + span * dedt_[i];
+            if (tau_)
+                for (int k = 0; k < SymmTensor<Dim>::size; ++k) (*tau_)[i].c[k] = tau0[i].c[k] + span * dtaudt_[i].c[k];
+        });
+    };
+    const double t = time().value();
+    // Predictor to the midpoint; the plastic history is not advanced there.
+    advance(0.5 * dt);
+    std::vector<double> history, heat;
+    if (plasticStrain_) history = *plasticStrain_;
+    if (temperature_) heat = *temperature_;
+    if (tau_) returnToYieldSurface(*tau_, 0.5 * dt);
+    if (plasticStrain_) *plasticStrain_ = history;
+    if (temperature_) *temperature_ = heat;
+    if (!boundaries_.empty()) boundaries_.constrainVelocity(*particles_, v_, t + 0.5 * dt);
+    updateSmoothingLength();
+    integrateSeconds_ += watch.seconds();
+    ratesValid_ = false;
+    ensureRates();
+    watch.restart();
+    // Corrector over the whole step with the midpoint rates.
+    advance(dt);
+    if (tau_) returnToYieldSurface(*tau_, dt);
+    if (!boundaries_.empty()) {
+        boundaries_.constrainVelocity(*particles_, v_, t + dt);
+        boundaries_.constrainPosition(*particles_, t + dt);
+    }
+    ratesValid_ = false;
+    started_ = true;
+    previousDeltaT_ = dt;
+    integrateSeconds_ += watch.seconds();
+    updateSmoothingLength();
+    checkState("integrate");
+}
+
+template <int Dim>
 void SphSolver<Dim>::step(double dt) {
+    if (predictorCorrector_) return stepPredictorCorrector(dt);
     ensureRates();
     Stopwatch watch;
     const std::size_t n = x_.size();

@@ -13,6 +13,7 @@
 //     densityRateLimit 0.2;   // Δt ≤ ξ ρ/|dρ/dt| as well as the Courant limit (0: off)
 //     neighbourSkin    0.2;   // Verlet skin as a fraction of the initial median support radius
 //     momentum         variational;   // or difference (non-conservative, for comparison)
+//     integrator       leapfrog;      // or predictorCorrector (midpoint rule, two rate evaluations)
 //
 // constant/materialProperties:  materials { name { equationOfState { type idealGas; gamma 1.4; }
 //                                                  strength { type vonMises; } } }   // strength optional
@@ -84,6 +85,7 @@ private:
     typename Strength<Dim>::Fields strengthFields(std::size_t i, SymmTensor<Dim>* tau);
     void computeRates();
     void updateSmoothingLength();
+    void stepPredictorCorrector(double dt);
     void checkState(const char* phase) const;
 
     std::unique_ptr<ParticleSet<Dim>> owner_;
@@ -98,6 +100,7 @@ private:
     double densityRateLimit_;
     double omegaMin_;
     bool differenceForm_;
+    bool predictorCorrector_;
     std::vector<Material> materials_;
     bool needsEnergy_ = false;
     bool anyStrength_ = false;
