@@ -4,8 +4,12 @@
 
 namespace mfdyn {
 
-SmoothingLengthLaw::SmoothingLengthLaw(const Dictionary& dict) : eta_(dict.getOrDefault<double>("eta", 1.2)) {
+SmoothingLengthLaw::SmoothingLengthLaw(const Dictionary& dict)
+    : eta_(dict.getOrDefault<double>("eta", 1.2)),
+      tolerance_(dict.getOrDefault<double>("tolerance", 1e-4)),
+      maxIterations_(dict.getOrDefault<int>("maxIterations", 30)) {
     if (!(eta_ > 0)) throw dict.error("eta", "eta must be positive");
+    if (!(tolerance_ > 0)) throw dict.error("tolerance", "tolerance must be positive");
 }
 
 SmoothingLengthLaw::~SmoothingLengthLaw() = default;
@@ -52,6 +56,17 @@ public:
     double initial(int dim, double mass, double rho) const override { return eta() * root(mass / rho, dim); }
 };
 
+// summation: h and ρ from c Σ b W(h) = m (η/h)^d, solved per particle by the solver (iterative()).
+class SummationSmoothingLength final : public SmoothingLengthLaw {
+public:
+    using SmoothingLengthLaw::SmoothingLengthLaw;
+    void update(int, std::size_t, const double*, const double*, const double*, double*) const override {}
+    bool iterative() const override { return true; }
+    double initial(int dim, double mass, double rho) const override { return eta() * root(mass / rho, dim); }
+};
+
+MFDYN_REGISTER(SmoothingLengthLaw, SummationSmoothingLength, "summation",
+               "h and rho solved together per particle (Newton with bisection fallback)");
 MFDYN_REGISTER(SmoothingLengthLaw, FixedSmoothingLength, "fixed", "h constant in time");
 MFDYN_REGISTER(SmoothingLengthLaw, MassDensitySmoothingLength, "massDensity", "h = eta (m/rho)^(1/d)");
 MFDYN_REGISTER(SmoothingLengthLaw, NumberDensitySmoothingLength, "numberDensity", "h = eta n^(-1/d), n = sum W");

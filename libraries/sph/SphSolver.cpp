@@ -265,6 +265,57 @@ void SphSolver<Dim>::updateNeighbours() {
     neighbourSeconds_ += watch.seconds();
 }
 
+// f(h) = c_i Σ_j b_j W_ij(h) − m_i (η/h)^d, f'(h) = c_i Σ_j b_j ∂W_ij/∂h + d m_i η^d / h^{d+1}; Newton
+// steps kept inside a bracket [lo, hi] that is halved when a step leaves it. h may not outgrow the
+// candidate list: its upper end is the radius the list was built for (support + skin).
+template <int Dim>
+void SphSolver<Dim>::solveSmoothingLength() {
+    Stopwatch watch;
+    if (!scheme_->explicitSummation())
+        throw properties_.error("smoothingLength", "the summation smoothing length needs an explicit density sum "
+                                                   "(densityScheme mass or number)");
+    const std::size_t n = x_.size();
+    scheme_->coefficients(n, m_.data(), rho_.data(), a_.data(), b_.data(), cc_.data());
+    const double eta = hLaw_->eta(), tolerance = hLaw_->tolerance();
+    const int maxIterations = hLaw_->maxIterations();
+    const double reach = 1.0 + verlet_->skin() / std::max(1e-300, kernel_->supportRadius(1.0));
+    std::vector<int> failed(n, 0);
+    parallelFor(n, [&](std::size_t i) {
+        const double mi = m_[i], ci = cc_[i];
+        auto f = [&](double h, double& slope) {
+            double sum = b_[i] * W_.W(0.0, h), dsum = b_[i] * W_.dWdh(0.0, h);
+            for (const auto j : neighbours_[i]) {
+                const double r = (x_[i] - x_[j]).norm();
+                sum += b_[j] * W_.W(r, h);
+                dsum += b_[j] * W_.dWdh(r, h);
+            }
+            const double target = mi * std::pow(eta / h, Dim);
+            slope = ci * dsum + Dim * target / h;
+            return ci * sum - target;
+        };
+        double lo = 0.5 * h_[i], hi = std::min(2.0 * h_[i], h_[i] * reach), h = h_[i];
+        for (int k = 0; k < maxIterations; ++k) {
+            double slope;
+            const double value = f(h, slope);
+            (value > 0 ? hi : lo) = h;  // f grows with h: the sum settles, the target falls as h^-d
+            double next = slope != 0 ? h - value / slope : 0.5 * (lo + hi);
+            if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+            if (std::abs(next - h) < tolerance * h) {
+                h = next;
+                failed[i] = 0;
+                break;
+            }
+            h = next;
+            failed[i] = k + 1 == maxIterations;
+        }
+        h_[i] = h;
+    });
+    if (std::any_of(failed.begin(), failed.end(), [](int v) { return v != 0; }))
+        Log::warning("summation smoothing length: some particles did not converge to the tolerance in " +
+                     std::to_string(maxIterations) + " iterations (step " + std::to_string(time().timeIndex()) + ")");
+    sumSeconds_ += watch.seconds();
+}
+
 template <int Dim>
 void SphSolver<Dim>::computeEquationOfState() {
     Stopwatch watch;
@@ -418,6 +469,7 @@ template <int Dim>
 void SphSolver<Dim>::ensureRates() {
     if (ratesValid_) return;
     updateNeighbours();
+    if (hLaw_->iterative()) solveSmoothingLength();
     computeDensitySums();
     computeEquationOfState();
     checkState("computeEquationOfState");

@@ -79,6 +79,7 @@ private:
     void updateNeighbours();
     void computeEquationOfState();
     void computeDensitySums();
+    void solveSmoothingLength();
     void computeVelocityGradient();
     void computeStressRate();
     void returnToYieldSurface(std::vector<SymmTensor<Dim>>& tau, double dt);
