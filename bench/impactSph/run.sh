@@ -33,7 +33,7 @@ setupCase() {
 }
 
 # Summary line value: field after the label
-val() { grep -m1 "^    $2 " "$1" | sed "s/^    $2 *//" | cut -d' ' -f1; }
+val() { awk -v L="$2" 'index($0, "    " L " ") == 1 { s = substr($0, length(L) + 5); split(s, a, " "); print a[1]; exit }' "$1"; }
 
 results=$WORK/results.md
 {
