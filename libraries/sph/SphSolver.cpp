@@ -29,6 +29,8 @@
 #include "solver/SolverRun.hpp"
 
 #include <algorithm>
+#include <Eigen/Eigenvalues>
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -127,6 +129,12 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
       material_(particles_->integerField("material")) {
     readMaterials();
     initialiseFields();
+    if (const Dictionary* as = properties_.findDict("artificialStress")) {
+        artificialStressEpsilon_ = as->getOrDefault<double>("epsilon", 0.3);
+        artificialStressExponent_ = as->getOrDefault<double>("exponent", 4.0);
+        if (artificialStressEpsilon_ < 0) throw as->error("epsilon", "epsilon must be non-negative");
+        if (!anyStrength_) throw as->error("epsilon", "artificial stress acts on solids: no material has a strength law");
+    }
     if (std::filesystem::exists(run.runCase().constantFile("boundaryConditions"))) {
         boundaryDict_ = run.runCase().readConstant("boundaryConditions");
         boundaries_ = BoundaryConditionList<Dim>(*boundaryDict_, *particles_);
@@ -398,6 +406,23 @@ void SphSolver<Dim>::computeRates() {
         });
     }
 
+    // Artificial stress R_i = Q diag(−ε max(λ_a, 0)/ρ_i²) Qᵀ from the principal values λ_a of the
+    // total stress σ = −P I + τ (tension positive); the pair term Σ_j m_j (R_i + R_j) f_ij^n ∇̄W with
+    // f_ij = W(r_ij, h̄)/W(Δp, h̄), Δp = h̄/η the particle spacing (Gray, Monaghan & Swift 2001).
+    const bool artificialStress = artificialStressEpsilon_ > 0 && tau_;
+    if (artificialStress) {
+        artificialStress_.resize(n);
+        parallelFor(n, [&](std::size_t i) {
+            const Tensor<Dim> sigma = (*tau_)[i].full() - p_[i] * Tensor<Dim>::Identity();
+            Eigen::SelfAdjointEigenSolver<Tensor<Dim>> eigen(sigma);
+            Vector<Dim> r = Vector<Dim>::Zero();
+            for (int a = 0; a < Dim; ++a)
+                if (eigen.eigenvalues()[a] > 0) r[a] = -artificialStressEpsilon_ * eigen.eigenvalues()[a] / (rho_[i] * rho_[i]);
+            artificialStress_[i] = eigen.eigenvectors() * r.asDiagonal() * eigen.eigenvectors().transpose();
+        });
+    }
+    const double eta = hLaw_->eta();
+
     parallelFor(n, [&](std::size_t i) {
         const double Pi = p_[i], oi = omega(i), hi = h_[i], ci = c_[i], rhoi = rho_[i], ei = energy(i);
         const double pressureI = a_[i] * Pi / oi;
@@ -459,6 +484,23 @@ void SphSolver<Dim>::computeRates() {
                                                      W_.dWdr(r, h_[j]) * ((*tau_)[j].full() * rhat));
             }
             dvdt_[i] += stressForce / rhoi;
+            if (artificialStress) {
+                Vector<Dim> extra = Vector<Dim>::Zero();
+                double work = 0;  // −½ Σ_j v_ij·(pair force)/m_i: the energy the pair force moves, kept
+                for (const auto j : neighbours_[i]) {
+                    const Vector<Dim> xij = x_[i] - x_[j];
+                    const double r = xij.norm();
+                    if (r == 0) continue;
+                    const double hBar = 0.5 * (hi + h_[j]);
+                    const double f = std::pow(W_.W(r, hBar) / W_.W(hBar / eta, hBar), artificialStressExponent_);
+                    const double gradBar = 0.5 * (W_.dWdr(r, hi) + W_.dWdr(r, h_[j]));
+                    const Vector<Dim> pairForce = m_[j] * f * gradBar / r * ((artificialStress_[i] + artificialStress_[j]) * xij);
+                    extra += pairForce;
+                    work -= 0.5 * (v_[i] - v_[j]).dot(pairForce);
+                }
+                dvdt_[i] += extra;
+                if (e_) dedt_[i] += work;
+            }
             dedt_[i] += (taui.cwiseProduct(velocityGradient_[i])).sum() / rhoi;
         }
     });

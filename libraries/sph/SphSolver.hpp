@@ -14,6 +14,7 @@
 //     neighbourSkin    0.2;   // Verlet skin as a fraction of the initial median support radius
 //     momentum         variational;   // or difference (non-conservative, for comparison)
 //     integrator       leapfrog;      // or predictorCorrector (midpoint rule, two rate evaluations)
+//     artificialStress { epsilon 0.3; exponent 4; }   // against tensile instability (strength only)
 //
 // constant/materialProperties:  materials { name { equationOfState { type idealGas; gamma 1.4; }
 //                                                  strength { type vonMises; } } }   // strength optional
@@ -102,6 +103,9 @@ private:
     double omegaMin_;
     bool differenceForm_;
     bool predictorCorrector_;
+    // Monaghan's artificial stress (Monaghan 2000; Gray, Monaghan & Swift 2001): ε, n; ε = 0 off.
+    double artificialStressEpsilon_ = 0, artificialStressExponent_ = 4;
+    std::vector<Tensor<Dim>> artificialStress_;
     std::vector<Material> materials_;
     bool needsEnergy_ = false;
     bool anyStrength_ = false;
