@@ -138,9 +138,6 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
     if (std::filesystem::exists(run.runCase().constantFile("boundaryConditions"))) {
         boundaryDict_ = run.runCase().readConstant("boundaryConditions");
         boundaries_ = BoundaryConditionList<Dim>(*boundaryDict_, *particles_);
-        if (boundaries_.makesGhosts())
-            throw boundaryDict_->error("boundaryConditions", "mirrorPlane ghost layers are not yet coupled to impactSph's "
-                                                             "sums; use symmetryPlane or rigidPlanarWall");
         Log::info("Boundary conditions:\n" + boundaries_.summary());
     }
 }
@@ -256,6 +253,42 @@ void SphSolver<Dim>::initialiseFields() {
 }
 
 template <int Dim>
+void SphSolver<Dim>::addGhosts() {
+    nReal_ = x_.size();
+    if (!boundaries_.makesGhosts()) return;
+    const double hMax = Reduce::max(nReal_, [&](std::size_t i) { return h_[i]; });
+    // The layer must cover the kernel's support; mirrorPlane makes it thicknessFactor (3) × the
+    // length it is given, so it is given a third of the largest support radius.
+    ghosts_ = boundaries_.ghosts(*particles_, v_, kernel_->supportRadius(hMax) / 3.0, time().value());
+    const std::size_t g = ghosts_.size();
+    particles_->resize(nReal_ + g);
+    a_.resize(nReal_ + g), b_.resize(nReal_ + g), cc_.resize(nReal_ + g);
+    for (std::size_t k = 0; k < g; ++k) {
+        const std::size_t i = nReal_ + k, src = ghosts_.source[k];
+        x_[i] = ghosts_.position[k];
+        v_[i] = ghosts_.velocity[k];
+        m_[i] = m_[src], rho_[i] = rho_[src], h_[i] = h_[src], material_[i] = material_[src];
+        if (e_) (*e_)[i] = (*e_)[src];
+        if (tau_) (*tau_)[i] = SymmTensor<Dim>::fromFull(ghosts_.reflectTensor(k, (*tau_)[src].full()));
+    }
+    // Ghosts come and go with the flow: the candidate list is rebuilt each step they exist.
+    if (verlet_) verlet_->invalidate();
+}
+
+template <int Dim>
+void SphSolver<Dim>::copyToGhosts(std::vector<double>& field) {
+    for (std::size_t k = 0; k < ghosts_.size(); ++k) field[nReal_ + k] = field[ghosts_.source[k]];
+}
+
+template <int Dim>
+void SphSolver<Dim>::removeGhosts() {
+    if (ghosts_.empty()) return;
+    particles_->resize(nReal_);
+    a_.resize(nReal_), b_.resize(nReal_), cc_.resize(nReal_);
+    ghosts_.clear();
+}
+
+template <int Dim>
 void SphSolver<Dim>::updateNeighbours() {
     Stopwatch watch;
     std::vector<double> radius(x_.size());
@@ -282,8 +315,8 @@ void SphSolver<Dim>::solveSmoothingLength() {
     if (!scheme_->explicitSummation())
         throw properties_.error("smoothingLength", "the summation smoothing length needs an explicit density sum "
                                                    "(densityScheme mass or number)");
-    const std::size_t n = x_.size();
-    scheme_->coefficients(n, m_.data(), rho_.data(), a_.data(), b_.data(), cc_.data());
+    const std::size_t n = nReal_;
+    scheme_->coefficients(x_.size(), m_.data(), rho_.data(), a_.data(), b_.data(), cc_.data());
     const double eta = hLaw_->eta(), tolerance = hLaw_->tolerance();
     const int maxIterations = hLaw_->maxIterations();
     const double reach = 1.0 + verlet_->skin() / std::max(1e-300, kernel_->supportRadius(1.0));
@@ -318,6 +351,7 @@ void SphSolver<Dim>::solveSmoothingLength() {
         }
         h_[i] = h;
     });
+    copyToGhosts(h_);
     if (std::any_of(failed.begin(), failed.end(), [](int v) { return v != 0; }))
         Log::warning("summation smoothing length: some particles did not converge to the tolerance in " +
                      std::to_string(maxIterations) + " iterations (step " + std::to_string(time().timeIndex()) + ")");
@@ -327,20 +361,22 @@ void SphSolver<Dim>::solveSmoothingLength() {
 template <int Dim>
 void SphSolver<Dim>::computeEquationOfState() {
     Stopwatch watch;
-    const std::size_t n = x_.size();
+    const std::size_t n = nReal_;
     parallelFor(n, [&](std::size_t i) {
         const EquationOfState& eos = *materials_[material_[i]].eos;
         const double e = e_ ? (*e_)[i] : 0.0;
         eos.evaluate(1, &rho_[i], &e, &p_[i], &c_[i]);
     });
+    copyToGhosts(p_);
+    copyToGhosts(c_);
     eosSeconds_ += watch.seconds();
 }
 
 template <int Dim>
 void SphSolver<Dim>::computeDensitySums() {
     Stopwatch watch;
-    const std::size_t n = x_.size();
-    scheme_->coefficients(n, m_.data(), rho_.data(), a_.data(), b_.data(), cc_.data());
+    const std::size_t n = nReal_;
+    scheme_->coefficients(x_.size(), m_.data(), rho_.data(), a_.data(), b_.data(), cc_.data());
     const bool summation = scheme_->summation();
     if (!summation && !omega_ && !number_) return;
     std::vector<double> newRho(summation ? n : 0);
@@ -363,16 +399,19 @@ void SphSolver<Dim>::computeDensitySums() {
         if (summation) newRho[i] = cc_[i] * sum;
     });
     if (summation) {
-        rho_.swap(newRho);
-        scheme_->coefficients(n, m_.data(), rho_.data(), a_.data(), b_.data(), cc_.data());
+        std::copy(newRho.begin(), newRho.end(), rho_.begin());
+        copyToGhosts(rho_);
+        scheme_->coefficients(x_.size(), m_.data(), rho_.data(), a_.data(), b_.data(), cc_.data());
     }
+    if (omega_) copyToGhosts(*omega_);
+    if (number_) copyToGhosts(*number_);
     sumSeconds_ += watch.seconds();
 }
 
 template <int Dim>
 void SphSolver<Dim>::computeRates() {
     Stopwatch watch;
-    const std::size_t n = x_.size();
+    const std::size_t n = nReal_;
     const DissipationParameters d = diss_;
     const bool riemann = d.kind == DissipationParameters::Kind::riemann;
     const bool monaghan = d.kind == DissipationParameters::Kind::monaghanGingold;
@@ -384,7 +423,7 @@ void SphSolver<Dim>::computeRates() {
     // Balsara's switch needs ∇·v and ∇×v per particle (SPH estimates with volumes m/ρ).
     std::vector<double> balsara;
     if (monaghan && d.balsara) {
-        balsara.assign(n, 1.0);
+        balsara.assign(x_.size(), 1.0);
         parallelFor(n, [&](std::size_t i) {
             double div = 0;
             Eigen::Vector3d curl = Eigen::Vector3d::Zero();
@@ -404,6 +443,7 @@ void SphSolver<Dim>::computeRates() {
             }
             balsara[i] = std::abs(div) / (std::abs(div) + curl.norm() + 1e-4 * c_[i] / h_[i]);
         });
+        copyToGhosts(balsara);
     }
 
     // Artificial stress R_i = Q diag(−ε max(λ_a, 0)/ρ_i²) Qᵀ from the principal values λ_a of the
@@ -411,8 +451,8 @@ void SphSolver<Dim>::computeRates() {
     // f_ij = W(r_ij, h̄)/W(Δp, h̄), Δp = h̄/η the particle spacing (Gray, Monaghan & Swift 2001).
     const bool artificialStress = artificialStressEpsilon_ > 0 && tau_;
     if (artificialStress) {
-        artificialStress_.resize(n);
-        parallelFor(n, [&](std::size_t i) {
+        artificialStress_.resize(x_.size());  // ghosts too: their stress is reflected, their P copied
+        parallelFor(x_.size(), [&](std::size_t i) {
             const Tensor<Dim> sigma = (*tau_)[i].full() - p_[i] * Tensor<Dim>::Identity();
             Eigen::SelfAdjointEigenSolver<Tensor<Dim>> eigen(sigma);
             Vector<Dim> r = Vector<Dim>::Zero();
@@ -510,6 +550,7 @@ void SphSolver<Dim>::computeRates() {
 template <int Dim>
 void SphSolver<Dim>::ensureRates() {
     if (ratesValid_) return;
+    addGhosts();
     updateNeighbours();
     if (hLaw_->iterative()) solveSmoothingLength();
     computeDensitySums();
@@ -521,6 +562,7 @@ void SphSolver<Dim>::ensureRates() {
     }
     computeRates();
     pairInteractions_ += double(neighbours_.list->pairCount());
+    removeGhosts();
     if (!boundaries_.empty()) boundaries_.constrainAcceleration(*particles_, dvdt_, time().value());
     ratesValid_ = true;
 }
@@ -528,7 +570,7 @@ void SphSolver<Dim>::ensureRates() {
 template <int Dim>
 void SphSolver<Dim>::computeVelocityGradient() {
     Stopwatch watch;
-    parallelFor(x_.size(), [&](std::size_t i) {
+    parallelFor(nReal_, [&](std::size_t i) {
         Tensor<Dim> L = Tensor<Dim>::Zero();
         for (const auto j : neighbours_[i]) {
             const Vector<Dim> xij = x_[i] - x_[j];
@@ -557,7 +599,7 @@ typename Strength<Dim>::Fields SphSolver<Dim>::strengthFields(std::size_t i, Sym
 template <int Dim>
 void SphSolver<Dim>::computeStressRate() {
     Stopwatch watch;
-    parallelFor(x_.size(), [&](std::size_t i) {
+    parallelFor(nReal_, [&](std::size_t i) {
         if (const auto& law = materials_[material_[i]].strength) law->stressRate(strengthFields(i, &(*tau_)[i]));
         else dtaudt_[i] = SymmTensor<Dim>{};
     });

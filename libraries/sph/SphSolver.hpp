@@ -19,9 +19,10 @@
 // constant/materialProperties:  materials { name { equationOfState { type idealGas; gamma 1.4; }
 //                                                  strength { type vonMises; } } }   // strength optional
 // constant/boundaryConditions (optional; libraries/boundaryConditions): fixed, prescribedVelocity,
-// symmetryPlane, rigidPlanarWall on regions or shapes; applied to accelerations after the rates,
-// to velocities after each leapfrog update and to positions after the drift. (mirrorPlane ghosts
-// are not yet taken into the SPH sums: such a case stops with a message.)
+// symmetryPlane, rigidPlanarWall, mirrorPlane on regions or shapes; applied to accelerations after
+// the rates, to velocities after each leapfrog update and to positions after the drift (mirrorPlane
+// ghosts take part in every sum as read-only neighbours: positions mirrored, velocity and stress
+// reflected, the rest copied from their source particle; regenerated every step).
 // Particles carry `material` (an index into the particle file's material names) or, without it,
 // take the material named like their region, or the only material there is.
 //
@@ -77,6 +78,9 @@ private:
     void readMaterials();
     void initialiseFields();
     void ensureRates();
+    void addGhosts();
+    void copyToGhosts(std::vector<double>& field);
+    void removeGhosts();
     void updateNeighbours();
     void computeEquationOfState();
     void computeDensitySums();
@@ -143,6 +147,10 @@ private:
     std::unique_ptr<VerletList<Dim>> verlet_;
     std::optional<Dictionary> boundaryDict_;
     BoundaryConditionList<Dim> boundaries_;
+    // Mirror ghosts of this step, appended after the nReal_ real particles while the rates are
+    // computed and removed before anything else sees the particles.
+    GhostBlock<Dim> ghosts_;
+    std::size_t nReal_ = 0;
     struct Rows {
         const NeighbourList* list;
         auto operator[](std::size_t i) const { return (*list)[i]; }
