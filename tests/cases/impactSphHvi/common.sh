@@ -24,3 +24,28 @@ coarseCase() {
 
 # drift <log> <quantity>: the relative drift the summary reports for totalEnergy / mass.
 drift() { grep "$2 drift" "$1" | awk '{print $4}'; }
+
+# sodCase <name>: a copy of tutorials/impactSph/sodShockTube (γ = 1.4, N ≈ 450 on [0, 1]).
+sodCase() {
+    local c="$WORK/$1"
+    mkdir -p "$c" && cp -r "$TUTORIALS/sodShockTube/system" "$TUTORIALS/sodShockTube/constant" "$c/"
+    echo "$c"
+}
+
+# checkSod <case> <label>: run it and hold it to the Sod bounds of the issue: L1(ρ) on [0, 1] below
+# 1.5e-2, star pressure and velocity within 2% of the exact values, energy drift below 1e-4.
+checkSod() {
+    local c="$1" label="$2"
+    particleGen -case "$c" > /dev/null 2>&1 || fail "particleGen failed"
+    impactSph -case "$c" > "$c/log" 2>&1 || fail "impactSph failed: $(tail -5 "$c/log")"
+    local l1 row t p pe u ue energy
+    l1=$(grep ",density," "$c/postProcessing/riemann/0/errorNorms.csv" | tail -n 1 | cut -d, -f3)
+    less "$l1" 1.5e-2 || fail "L1(rho) $l1"
+    row=$(tail -n 1 "$c/postProcessing/riemann/0/starState.csv")
+    IFS=, read -r t p pe u ue <<< "$row"
+    less "$(abs "$(awk -v a="$p" -v b="$pe" 'BEGIN { print (a - b) / b }')")" 0.02 || fail "P* $p vs $pe"
+    less "$(abs "$(awk -v a="$u" -v b="$ue" 'BEGIN { print (a - b) / b }')")" 0.02 || fail "u* $u vs $ue"
+    energy=$(drift "$c/log" totalEnergy)
+    less "$(abs "$energy")" 1e-4 || fail "energy drift $energy"
+    pass "$label: L1(rho) $l1, P* $p ($pe), u* $u ($ue), energy drift $energy"
+}
