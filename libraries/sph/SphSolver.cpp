@@ -751,7 +751,7 @@ void SphSolver<Dim>::checkState(const char* phase) const {
     const std::size_t n = x_.size();
     auto bad = [&](std::size_t i) {
         return !(rho_[i] > 0) || !std::isfinite(rho_[i]) || !x_[i].allFinite() || !v_[i].allFinite() ||
-               !std::isfinite(p_[i]) || !(h_[i] > 0) || (e_ && !std::isfinite((*e_)[i]));
+               !std::isfinite(p_[i]) || !(c_[i] > 0) || !(h_[i] > 0) || (e_ && !std::isfinite((*e_)[i]));
     };
     const double count = Reduce::sum<double>(n, [&](std::size_t i) { return bad(i) ? 1.0 : 0.0; });
     if (count == 0) return;
@@ -765,6 +765,11 @@ void SphSolver<Dim>::checkState(const char* phase) const {
           << ", sound speed " << c_[i] << ", h " << h_[i];
         if (e_) s << ", e " << (*e_)[i];
         s << ", |v| " << v_[i].norm() << "; " << count << " particles affected";
+        if (std::isfinite(rho_[i]) && !(c_[i] > 0))
+            s << "\n    the equation of state gives c^2 <= 0 at this state (density " << rho_[i]
+              << "): the state has left the model's range of validity (for mieGruneisen, strong "
+                 "compression with little heating; try hugoniot linearUsUp, a smaller deltaT or more "
+                 "dissipation)";
         throw RunError(s.str());
     }
 }
