@@ -24,6 +24,18 @@
 //
 //     c^2 = [(1 - Gamma0 mu/2) P_H'(mu) - Gamma0 P_H / 2] / rho0 + Gamma0 e + Gamma0 P / rho.
 //
+// `gruneisen constantRhoGamma` takes the usual hydrocode assumption Gamma rho = Gamma0 rho0
+// (Gamma/V constant; e.g. Meyers 1994 §4.6) instead of the thesis's constant Gamma:
+//
+//     P   = (1 - Gamma0 mu / (2 (1 + mu))) P_H(mu) + Gamma0 rho0 e,
+//     c^2 = [(1 - Gamma0 mu/(2(1+mu))) P_H' - Gamma0 P_H / (2 (1+mu)^2)] / rho0 + Gamma0 rho0 P / rho^2.
+//
+// Both agree to first order in mu and reproduce the same Hugoniot (the Hugoniot-energy identity
+// holds for any Gamma(rho)); the constant-Gamma factor (1 - Gamma0 mu/2) turns negative at
+// mu = 2/Gamma0, where c^2 can become negative in a strongly compressed, little-heated particle
+// (met at the contact of an aluminium-on-lead impact at 6.85 km/s); constantRhoGamma's factor stays
+// above 1 - Gamma0/2 for any compression.
+//
 // Limits: no spall or tension cut-off in the thesis; `minimumPressure` clamps P from below
 // (P = max(P, pMin)) and leaves c^2 as the uncut value, since the cut-off models failed material
 // that the time step must still resolve, not a softer one. c^2 can be negative in strong tension.
@@ -34,6 +46,7 @@
 //     s                Us-up slope (the note's xi)              -        yes (here or in the material)
 //     gamma0           Grueneisen parameter                     -        yes (here or in the material)
 //     hugoniot         cubic | linearUsUp                       -        no        cubic
+//     gruneisen        constant | constantRhoGamma              -        no        constant
 //     minimumPressure  tension cut-off pMin (negative)          Pa       no        none (-infinity)
 #include "materials/equationOfState/MieGruneisen.hpp"
 
@@ -57,6 +70,11 @@ MieGruneisen::MieGruneisen(const Dictionary& dict)
                          "expected 'cubic' (Zisis 2017 Eq. 6.11) or 'linearUsUp' (the exact "
                          "Hugoniot of Us = c0 + s up), found '" +
                              form + "'");
+    const auto gruneisen = dict.getOrDefault<std::string>("gruneisen", "constant");
+    if (gruneisen != "constant" && gruneisen != "constantRhoGamma")
+        throw dict.error("gruneisen", "expected 'constant' (Zisis 2017) or 'constantRhoGamma' (Gamma rho = Gamma0 rho0), "
+                                      "found '" + gruneisen + "'");
+    constantRhoGamma_ = gruneisen == "constantRhoGamma";
     if (auto pMin = optionalParameter(dict, "minimumPressure")) {
         if (!(*pMin <= 0.0)) throw parameterError(dict, "minimumPressure", "expected a tension (<= 0) in Pa");
         pMin_ = *pMin;
@@ -84,6 +102,14 @@ void MieGruneisen::state(double rho, double e, double& p, double& c2) const {
             pH = A_ * mu * (1.0 + mu) / (d * d);
             dpH = A_ * ((1.0 + 2.0 * mu) / (d * d) + 2.0 * (s_ - 1.0) * mu * (1.0 + mu) / (d * d * d));
         }
+    }
+    if (constantRhoGamma_) {
+        const double q = 1.0 / (1.0 + mu);
+        const double f = 1.0 - 0.5 * gamma0_ * mu * q;
+        const double pUncut = f * pH + gamma0_ * rho0 * e;
+        c2 = (f * dpH - 0.5 * gamma0_ * pH * q * q) / rho0 + gamma0_ * rho0 * pUncut / (rho * rho);
+        p = std::max(pUncut, pMin_);
+        return;
     }
     const double f = 1.0 - 0.5 * gamma0_ * mu;
     const double pUncut = f * pH + gamma0_ * rho * e;

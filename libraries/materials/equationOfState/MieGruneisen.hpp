@@ -27,6 +27,7 @@ public:
 private:
     double c0_, s_, gamma0_;
     Hugoniot hugoniot_ = Hugoniot::cubic;
+    bool constantRhoGamma_ = false;
     double pMin_ = -std::numeric_limits<double>::infinity();
     double A_ = 0.0, B_ = 0.0, C_ = 0.0;
 };
