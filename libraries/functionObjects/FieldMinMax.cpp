@@ -23,15 +23,7 @@ FieldMinMax::FieldMinMax(const Dictionary& dict, const std::string& name, const 
     components_ = mode == "component";
     std::vector<std::string> columns{"time"};
     for (const auto& field : fields_) {
-        const FieldBase* f = context.fields().findField(field);
-        if (!f) {
-            std::string have;
-            for (const auto& n : context.fields().fieldNames()) have += " " + n;
-            std::string message = "no field '" + field + "' in this run; fields:" + have;
-            if (auto g = closestMatch(field, context.fields().fieldNames()); !g.empty())
-                message += " (did you mean '" + g + "'?)";
-            throw dict.error("fields", message);
-        }
+        const FieldBase* f = &requireField(dict, "fields", field);
         std::vector<std::string> parts{field};
         if (components_ && f->components() > 1) {
             parts.clear();

@@ -45,6 +45,16 @@ bool FunctionObject::due(bool solverWrites) {
     return true;
 }
 
+const FieldBase& FunctionObject::requireField(const Dictionary& dict, const std::string& key,
+                                              const std::string& name) const {
+    if (const FieldBase* f = context_.fields().findField(name)) return *f;
+    const auto names = context_.fields().fieldNames();
+    std::string message = "no field '" + name + "' in this run; fields:";
+    for (const auto& n : names) message += " " + n;
+    if (auto guess = closestMatch(name, names); !guess.empty()) message += " (did you mean '" + guess + "'?)";
+    throw dict.error(key, message);
+}
+
 std::filesystem::path FunctionObject::outputFile(const std::string& fileName) const {
     return context_.runCase().postProcessing() / name_ / context_.startTimeName() / fileName;
 }

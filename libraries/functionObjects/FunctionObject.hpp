@@ -48,6 +48,8 @@ public:
 protected:
     const RunContext& context() const { return context_; }
     std::filesystem::path outputFile(const std::string& fileName) const;
+    // The run's field `name`, or an InputError at `key` listing the fields there are.
+    const FieldBase& requireField(const Dictionary& dict, const std::string& key, const std::string& name) const;
 
 private:
     std::string name_;

@@ -30,15 +30,7 @@ Probes::Probes(const Dictionary& dict, const std::string& name, const RunContext
     std::vector<std::string> columns{"time"};
     std::vector<std::string> parts;
     for (const auto& field : fields_) {
-        const FieldBase* f = context.fields().findField(field);
-        if (!f) {
-            std::string have;
-            for (const auto& n : context.fields().fieldNames()) have += " " + n;
-            std::string message = "no field '" + field + "' in this run; fields:" + have;
-            if (auto g = closestMatch(field, context.fields().fieldNames()); !g.empty())
-                message += " (did you mean '" + g + "'?)";
-            throw dict.error("fields", message);
-        }
+        const FieldBase* f = &requireField(dict, "fields", field);
         for (const auto& c : componentNames(f->kind(), f->dimension()))
             parts.push_back(c.empty() || f->components() == 1 ? field : field + "_" + c);
     }

@@ -72,7 +72,7 @@ RiemannError::RiemannError(const Dictionary& dict, const std::string& name, cons
         if (f != "density" && f != "velocity" && f != "pressure" && f != "specificInternalEnergy")
             throw dict.error("fields", "'" + f + "' has no exact counterpart; valid: density velocity pressure "
                                                  "specificInternalEnergy");
-        if (!context.fields().findField(f)) throw dict.error("fields", "this run has no field '" + f + "'");
+        requireField(dict, "fields", f);
     }
     star_ = std::make_unique<CsvFile>(outputFile("starState.csv"),
                                       std::vector<std::string>{"time", "pStar", "pStarExact", "uStar", "uStarExact"});
