@@ -207,8 +207,12 @@ double Time::chooseDeltaT(const TimeStepVote& stable) {
         if (remaining <= dt * (1 + landing)) {
             dt = remaining;
         } else if (spread) {
-            const double steps = std::ceil(remaining / dt * (1 - landing));
-            if (steps < 1e9) dt = std::min(dt, remaining / steps);
+            // A whole number of steps to within round-off is taken as that number: ceil() of
+            // 2000.0000001 would keep dt and leave a sliver step before every write.
+            const double ratio = remaining / dt;
+            double steps = std::round(ratio);
+            if (std::abs(ratio - steps) > landing * ratio) steps = std::ceil(ratio);
+            if (steps < 1e9) dt = remaining / steps;
         }
     };
     if (writeControl_ == WriteControl::adjustableRunTime) landOn(nextWriteTime(), true);

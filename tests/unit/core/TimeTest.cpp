@@ -143,3 +143,15 @@ TEST(Time, TimeNamesFollowWritePrecision) {
     EXPECT_EQ(time.nameOf(1e-5), "1e-05");
     EXPECT_EQ(time.nameOf(2), "2");
 }
+
+TEST(Time, ConstantStepThatDividesTheWriteIntervalLeavesNoSliverStep) {
+    // 1e-6 into 0.002 is 2000 steps up to round-off in the accumulated time: every step must stay
+    // 1e-6 to within round-off, and each write land on a multiple of 0.002.
+    Time time = makeTime("endTime 0.01; deltaT 1e-6; writeControl adjustableRunTime; writeInterval 0.002;");
+    std::vector<double> steps;
+    const auto writes = run(time, unlimited, &steps);
+    ASSERT_EQ(steps.size(), 10000u);
+    for (double dt : steps) ASSERT_NEAR(dt, 1e-6, 1e-15);
+    ASSERT_EQ(writes.size(), 5u);
+    for (std::size_t k = 0; k < writes.size(); ++k) EXPECT_NEAR(writes[k], 0.002 * double(k + 1), 1e-15);
+}
