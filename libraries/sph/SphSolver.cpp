@@ -467,6 +467,9 @@ void SphSolver<Dim>::computeRates() {
         const double Pi = p_[i], oi = omega(i), hi = h_[i], ci = c_[i], rhoi = rho_[i], ei = energy(i);
         const double pressureI = a_[i] * Pi / oi;
         Vector<Dim> force = Vector<Dim>::Zero();  // m_i dv_i/dt
+        // Deviatoric stress terms ride in the same pair loop (r, r̂ and dW/dr computed once).
+        const Tensor<Dim> taui = tau_ ? (*tau_)[i].full() : Tensor<Dim>::Zero();
+        Vector<Dim> stressForce = Vector<Dim>::Zero();
         double continuity = 0, massFlux = 0, heating = 0;
         for (const auto j : neighbours_[i]) {
             const Vector<Dim> xij = x_[i] - x_[j];
@@ -477,6 +480,7 @@ void SphSolver<Dim>::computeRates() {
             const Vector<Dim> vij = v_[i] - v_[j];
             const double vr = vij.dot(rhat);
             continuity += b_[j] * vr * dWi;
+            if (tau_) stressForce += (m_[j] / rho_[j]) * (dWi * (taui * rhat) + dWj * ((*tau_)[j].full() * rhat));
             if (differenceForm)
                 force -= (m_[i] / rhoi * m_[j] / rho_[j] * (p_[j] - Pi) * dWi) * rhat;
             else
@@ -513,16 +517,6 @@ void SphSolver<Dim>::computeRates() {
         dvdt_[i] = force / m_[i];
         dedt_[i] = Pi / (rhoi * rhoi) * drho + heating;
         if (tau_) {
-            const Tensor<Dim> taui = (*tau_)[i].full();
-            Vector<Dim> stressForce = Vector<Dim>::Zero();
-            for (const auto j : neighbours_[i]) {
-                const Vector<Dim> xij = x_[i] - x_[j];
-                const double r = xij.norm();
-                if (r == 0) continue;
-                const Vector<Dim> rhat = xij / r;
-                stressForce += (m_[j] / rho_[j]) * (W_.dWdr(r, hi) * (taui * rhat) +
-                                                     W_.dWdr(r, h_[j]) * ((*tau_)[j].full() * rhat));
-            }
             dvdt_[i] += stressForce / rhoi;
             if (artificialStress) {
                 Vector<Dim> extra = Vector<Dim>::Zero();
