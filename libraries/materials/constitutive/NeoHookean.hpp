@@ -1,0 +1,19 @@
+#pragma once
+// `neoHookean`: the nearly incompressible neo-Hookean law, mooneyRivlin with xi = 0 and
+// zeta = mu/2 (Lee et al. 2016, section 2; tl-jst-sph.md section 1, "Named special cases").
+//
+//     materials { rubber { rho0 1100; youngsModulus 17e6; poissonRatio 0.45;
+//                          constitutiveLaw { type neoHookean; } } }
+//
+// Keywords: rho0 and the elastic constants only (see ConstitutiveLaw.hpp).
+#include "materials/constitutive/ConstitutiveLaw.hpp"
+
+namespace mfdyn {
+
+class NeoHookean : public ConstitutiveLaw {
+public:
+    explicit NeoHookean(const Dictionary& dict);
+    void stress(const Fields& fields, bool updateState) const override;
+};
+
+}  // namespace mfdyn
