@@ -1,5 +1,8 @@
-// box: the axis-aligned box min <= x < max (half-open, so boxes that share a face do not both
-// claim the particles on it). Volume Π (max_d - min_d).
+// box: the closed axis-aligned box min <= x <= max. Volume Π (max_d - min_d).
+// Closed, so that a lattice with nodes on the faces (nodal, tl-jst-sph.md 2.1) keeps them and
+// a selection box drawn up to a face takes the particles on it. Two regions whose boxes share a
+// face both contain a point on it: with `override yes` (the default) the later region takes it;
+// the cell-centred lattices (cubic) put no point on a face whose box is a whole number of cells.
 #include "geometry/Box.hpp"
 
 namespace mfdyn {
@@ -9,12 +12,13 @@ Box::Box(const Dictionary& dict, int dimension) : Shape(dict, dimension) {
     box_.max = readPoint(dict, "max");
     for (int d = 0; d < dimension; ++d)
         if (!(box_.max[d] > box_.min[d]))
-            throw dict.error("max", "max must exceed min in every direction (direction " + std::to_string(d + 1) + ")");
+            throw dict.error(
+                "max", "max must exceed min in every direction (direction " + std::to_string(d + 1) + ")");
 }
 
 bool Box::inside(const double* x) const {
     for (int d = 0; d < dimension(); ++d)
-        if (x[d] < box_.min[d] || x[d] >= box_.max[d]) return false;
+        if (x[d] < box_.min[d] || x[d] > box_.max[d]) return false;
     return true;
 }
 

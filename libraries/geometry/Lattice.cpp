@@ -5,11 +5,15 @@
 namespace mfdyn {
 
 Lattice::Lattice(const Dictionary& dict, int dimension)
+    : Lattice(dict, dimension, dict.get<double>("spacing")) {
+    if (!(spacing() > 0)) throw dict.error("spacing", "spacing must be positive");
+}
+
+Lattice::Lattice(const Dictionary& dict, int dimension, double spacing)
     : dimension_(dimension),
-      spacing_(dict.get<double>("spacing")),
+      spacing_(spacing),
       jitter_(dict.getOrDefault<double>("jitter", 0.0)),
       seed_(dict.getOrDefault<unsigned long>("seed", 1UL)) {
-    if (!(spacing_ > 0)) throw dict.error("spacing", "spacing must be positive");
     if (!(jitter_ >= 0 && jitter_ < 0.5))
         throw dict.error("jitter",
                          "jitter is a fraction of the spacing in [0, 0.5), found " + std::to_string(jitter_));
@@ -26,6 +30,10 @@ std::vector<double> Lattice::points(const BoundingBox& box) const {
         for (double& x : p) x += uniform(engine);
     }
     return p;
+}
+
+std::vector<double> Lattice::pointVolumes(const BoundingBox&, const std::vector<double>& points) const {
+    return std::vector<double>(points.size() / std::size_t(dimension_), pointVolume());
 }
 
 }  // namespace mfdyn

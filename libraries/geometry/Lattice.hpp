@@ -2,7 +2,10 @@
 // Where particles sit inside a shape, selected by name:
 //     lattice { type cubic; spacing 0.01; }
 //     lattice { type hexagonal; spacing 0.01; jitter 0.1; seed 42; }
-// A lattice fills a bounding box with points, each carrying the volume it represents.
+//     lattice { type nodal; points (21 11 3); }
+// A lattice fills a bounding box with points, each carrying the volume it represents: the same
+// pointVolume() for every point of cubic, hexagonal and hcp; per point (pointVolumes) for nodal,
+// whose points on the box's faces stand for half a cell or less.
 // Every lattice takes `jitter` (default 0): each point is moved by a displacement uniform in
 // [−jitter·spacing, +jitter·spacing] per component, drawn from std::mt19937_64 seeded with `seed`
 // (default 1) in lattice order, so a jittered lattice is still identical run to run. Jitter breaks
@@ -34,11 +37,20 @@ public:
 
     // Points covering `box`, `dimension()` coordinates each, in a fixed order (so generation is
     // identical run to run): the lattice sites, jittered when asked.
-    std::vector<double> points(const BoundingBox& box) const;
+    virtual std::vector<double> points(const BoundingBox& box) const;
     // Volume per lattice point (spacing^dim for cubic).
     virtual double pointVolume() const = 0;
+    // The volume of each of `points` (as returned by points(box)), one per point. By default
+    // pointVolume() for every point; the nodal lattice gives its boundary points their
+    // tributary (dual-cell) volumes.
+    virtual std::vector<double> pointVolumes(const BoundingBox& box, const std::vector<double>& points) const;
 
 protected:
+    // For a lattice whose spacing is not one number given as `spacing` (nodal with `points`):
+    // `spacing` is taken as given and the keyword is not read.
+    Lattice(const Dictionary& dict, int dimension, double spacing);
+    std::uint64_t seed() const { return seed_; }
+
     // The regular lattice sites covering `box`, in a fixed order.
     virtual std::vector<double> sites(const BoundingBox& box) const = 0;
 

@@ -235,11 +235,13 @@ std::unique_ptr<ParticleSetBase> ParticleGenerator::generate() {
             std::erase_if(all, [&](const Particle& p) { return shape->inside(p.x.data()); });
         }
         const auto points = lattice->points(shape->bounds());
-        const double mass = density * lattice->pointVolume();
+        // Per point: the same for most lattices, smaller on the faces of a nodal one.
+        const auto volumes = lattice->pointVolumes(shape->bounds(), points);
         RegionReport rep{entry->key, 0, 0, shape->volume().value_or(-1), 0, lattice->spacing()};
         for (std::size_t p = 0; p * dim < points.size(); ++p) {
             std::vector<double> x(points.begin() + long(p * dim), points.begin() + long((p + 1) * dim));
             if (!shape->inside(x.data())) continue;
+            const double mass = density * volumes[p];
             all.push_back({x, regionId, mass, values, materialId, density});
             if (omega) {
                 const auto& w = *omega;
@@ -251,12 +253,12 @@ std::unique_ptr<ParticleSetBase> ParticleGenerator::generate() {
                 for (int c = 0; c < dim; ++c) v[c] += spin[c];
             }
             ++rep.count;
+            rep.volume += volumes[p];
+            rep.mass += mass;
         }
         if (rep.count == 0)
             throw r.error("shape", "region '" + entry->key + "' is empty: no lattice point of spacing " +
                                        std::to_string(lattice->spacing()) + " falls inside its shape");
-        rep.volume = double(rep.count) * lattice->pointVolume();
-        rep.mass = double(rep.count) * mass;
         report_.push_back(rep);
     }
 

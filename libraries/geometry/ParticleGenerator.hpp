@@ -8,7 +8,7 @@
 //         {
 //             shape   { type box; min (0 0); max (0.01 0.01); }
 //             lattice { type cubic; spacing 1e-3; }
-//             density 2700;                   // kg/m^3: mass = density × lattice volume per particle
+//             density 2700;                   // kg/m^3: mass = density × the point's lattice volume
 //             fields  { velocity (0 -100); }  // uniform initial values of any scalar or vector field
 //             override yes;                   // take over earlier regions' particles in this shape (default)
 //             mass    uniformSpacing;         // or equalMass (below); default uniformSpacing
@@ -46,10 +46,10 @@ namespace mfdyn {
 struct RegionReport {
     std::string name;
     std::size_t count = 0;
-    double volume = 0;         // count × lattice volume per particle
-    double exactVolume = -1;   // the shape's closed-form volume, or -1
+    double volume = 0;        // Σ the particles' lattice volumes (Lattice::pointVolumes)
+    double exactVolume = -1;  // the shape's closed-form volume, or -1
     double mass = 0;
-    double spacing = 0;
+    double spacing = 0;  // Lattice::spacing(): 0 for a nodal lattice given by `points`
 };
 
 class ParticleGenerator {
