@@ -3,6 +3,7 @@
 #include "core/Parallel.hpp"
 
 #include <sstream>
+#include <unordered_map>
 
 namespace mfdyn {
 
@@ -48,6 +49,19 @@ void BoundaryCondition<Dim>::assignOnSelection(std::vector<VectorType>& values,
                                                const VectorType& value) const {
     const auto& idx = selection_.indices();
     parallelFor(idx.size(), [&](std::size_t k) { values[idx[k]] = value; });
+}
+
+template <int Dim>
+std::vector<std::size_t> BoundaryCondition<Dim>::indicesOf(const ParticleSet<Dim>& particles,
+                                                           const std::vector<std::int64_t>& ids) {
+    std::unordered_map<std::int64_t, std::size_t> where;
+    where.reserve(ids.size());
+    for (std::size_t k = 0; k < ids.size(); ++k) where.emplace(ids[k], k);
+    std::vector<std::size_t> index(ids.size(), npos);
+    const auto& globalId = particles.globalId();
+    for (std::size_t i = 0; i < globalId.size(); ++i)
+        if (const auto it = where.find(globalId[i]); it != where.end()) index[it->second] = i;
+    return index;
 }
 
 template class BoundaryCondition<1>;

@@ -23,10 +23,13 @@
 //   1. ghosts(particles, v, hMax)            before the neighbour search: ghost particles of the
 //                                            mirror planes (GhostBlock.hpp), appended to the
 //                                            search as neighbours; other fields by block.source.
+//  2a. addBoundaryForce(particles, f, t)    before constrainAcceleration: adds the boundary
+//                                            forces [N] per particle (prescribedTraction:
+//                                            A_a t_a of tl-jst-sph.md 2.7) to `f`; a
+//                                            total-Lagrangian solver adds f/V to dp/dt, an
+//                                            updated-Lagrangian one f/m to dv/dt.
 //   2. constrainAcceleration(particles, a, t)  after the rates are computed, before they are
 //                                            integrated: constrained components of dv/dt = 0.
-//                                            (Boundary forces such as a prescribed traction,
-//                                            (A_a/V_a) t_a of tl-jst-sph.md 2.7, add to `a` here.)
 //   3. constrainVelocity(particles, v, t)    after every velocity update (each kick of a leapfrog,
 //                                            for every velocity array that is updated, e.g. the
 //                                            half-step one), with t the time v belongs to.
@@ -37,11 +40,15 @@
 // The arrays passed are the solver's own (velocity or, in a total-Lagrangian solver, linear
 // momentum p = rho0 v: fixed, symmetryPlane and the plane conditions act on any such vector;
 // prescribedVelocity writes velocities, see prescribedVelocity(t)).
+//
+// A condition that acts on particles picked once by their initial positions (skewSymmetricPlane,
+// prescribedTraction) keeps them by globalId and re-finds them in selectionUpdated().
 #include "boundaryConditions/GhostBlock.hpp"
 #include "boundaryConditions/Selection.hpp"
 #include "core/Registry.hpp"
 #include "particles/ParticleSet.hpp"
 
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <string>
@@ -71,9 +78,12 @@ public:
     // True while the condition holds: t < releaseTime.
     bool active(double t) const { return t < releaseTime_; }
     // For the log: "chamber: fixed on regions (wall), 120 particles".
-    std::string describe() const;
+    virtual std::string describe() const;
 
-    void updateSelection(const ParticleSet<Dim>& particles) { selection_.update(particles); }
+    void updateSelection(const ParticleSet<Dim>& particles) {
+        selection_.update(particles);
+        selectionUpdated(particles);
+    }
 
     void constrainVelocity(ParticleSet<Dim>& particles, std::vector<VectorType>& velocity, double t) {
         if (active(t)) velocityConstraint(particles, velocity, t);
@@ -81,6 +91,10 @@ public:
     // On the particle field `velocity`.
     void constrainVelocity(ParticleSet<Dim>& particles, double t) {
         constrainVelocity(particles, particles.template requireField<VectorType>("velocity"), t);
+    }
+    // Adds this condition's boundary forces [N] to `force` (one entry per particle).
+    void addBoundaryForce(const ParticleSet<Dim>& particles, std::vector<VectorType>& force, double t) const {
+        if (active(t)) boundaryForce(particles, force, t);
     }
     void constrainAcceleration(ParticleSet<Dim>& particles, std::vector<VectorType>& acceleration, double t) {
         if (active(t)) accelerationConstraint(particles, acceleration, t);
@@ -103,11 +117,18 @@ protected:
     virtual void velocityConstraint(ParticleSet<Dim>&, std::vector<VectorType>&, double) {}
     virtual void accelerationConstraint(ParticleSet<Dim>&, std::vector<VectorType>&, double) {}
     virtual void positionConstraint(ParticleSet<Dim>&, double) {}
+    virtual void boundaryForce(const ParticleSet<Dim>&, std::vector<VectorType>&, double) const {}
+    // After selection_ has been updated for a reorder or a change in particle count.
+    virtual void selectionUpdated(const ParticleSet<Dim>&) {}
     virtual void ghostLayer(const ParticleSet<Dim>&, const std::vector<VectorType>&, double,
                             GhostBlock<Dim>&) const {}
 
     // Sets every selected entry of `values` to `value`.
     void assignOnSelection(std::vector<VectorType>& values, const VectorType& value) const;
+    // The current index of each particle of `ids` (globalId), or npos for one no longer present.
+    static constexpr std::size_t npos = std::size_t(-1);
+    static std::vector<std::size_t> indicesOf(const ParticleSet<Dim>& particles,
+                                              const std::vector<std::int64_t>& ids);
 
     Selection<Dim> selection_;
 

@@ -50,6 +50,12 @@ GhostBlock<Dim> BoundaryConditionList<Dim>::ghosts(const ParticleSet<Dim>& parti
 }
 
 template <int Dim>
+void BoundaryConditionList<Dim>::addBoundaryForces(const ParticleSet<Dim>& particles,
+                                                   std::vector<VectorType>& force, double t) const {
+    for (const auto& c : conditions_) c->addBoundaryForce(particles, force, t);
+}
+
+template <int Dim>
 void BoundaryConditionList<Dim>::constrainAcceleration(ParticleSet<Dim>& particles,
                                                        std::vector<VectorType>& acceleration, double t) {
     for (auto& c : conditions_) c->constrainAcceleration(particles, acceleration, t);

@@ -14,6 +14,7 @@
 //     bcs.updateSelections(particles);                 // only after a reorder / resize
 //     GhostBlock<Dim> ghosts = bcs.ghosts(particles, v, hMax, t);   // -> neighbour search
 //     ... compute rates a ...
+//     bcs.addBoundaryForces(particles, f, t);          // f [N]; a += f/m (or dp/dt += f/V)
 //     bcs.constrainAcceleration(particles, a, t);
 //     ... v += a dt (each kick) ...;   bcs.constrainVelocity(particles, v, t);
 //     ... x += v dt ...;               bcs.constrainPosition(particles, t);
@@ -49,6 +50,8 @@ public:
     void updateSelections(const ParticleSet<Dim>& particles);
     GhostBlock<Dim> ghosts(const ParticleSet<Dim>& particles, const std::vector<VectorType>& velocity,
                            double hMax, double t) const;
+    // Adds every condition's boundary forces [N] to `force` (sized to the particles by the caller).
+    void addBoundaryForces(const ParticleSet<Dim>& particles, std::vector<VectorType>& force, double t) const;
     void constrainAcceleration(ParticleSet<Dim>& particles, std::vector<VectorType>& acceleration, double t);
     void constrainVelocity(ParticleSet<Dim>& particles, std::vector<VectorType>& velocity, double t);
     void constrainVelocity(ParticleSet<Dim>& particles, double t);

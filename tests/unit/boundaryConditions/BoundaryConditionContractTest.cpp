@@ -22,6 +22,8 @@ const std::map<std::string, std::string> minimalBody{
     {"symmetryPlane", "SHAPE point (0.1 0 0); normal (1 0 0);"},
     {"rigidPlanarWall", "SHAPE point (0.1 0 0); normal (1 0 0);"},
     {"mirrorPlane", "SHAPE point (0 0 0); normal (1 0 0);"},
+    {"skewSymmetricPlane", "SHAPE point (0.1 0 0); normal (1 0 0);"},
+    {"prescribedTraction", "SHAPE traction (1 0 0); area 2;"},
 };
 
 template <int Dim>
@@ -30,6 +32,8 @@ void checkContract(const std::string& type) {
     const auto it = minimalBody.find(type);
     ASSERT_NE(it, minimalBody.end()) << "give the new type '" << type << "' a minimal dictionary here";
     auto p = lattice<Dim>(6, 0.1);
+    p.scalarField("mass").assign(p.size(), 2.0);  // for the conditions that need volumes
+    p.scalarField("density").assign(p.size(), 1000.0);
     const auto x0 = p.position();
     const auto v0 = p.vectorField("velocity");
     const auto a0 = p.vectorField("acceleration");
@@ -41,6 +45,8 @@ void checkContract(const std::string& type) {
     auto bc = condition<Dim>("type " + type + "; " + body, p);
     EXPECT_EQ(bc->type(), type);
     EXPECT_EQ(bc->selection().size(), p.size() / 6 * 3);  // x = 0, 0.1, 0.2
+    std::vector<Vector<Dim>> force(p.size(), Vector<Dim>::Zero());
+    bc->addBoundaryForce(p, force, 0.0);
     bc->constrainAcceleration(p, p.vectorField("acceleration"), 0.0);
     bc->constrainVelocity(p, 0.0);
     bc->constrainPosition(p, 0.0);
@@ -55,6 +61,7 @@ void checkContract(const std::string& type) {
         EXPECT_EQ(p.position()[i], x0[i]) << i;
         EXPECT_EQ(p.vectorField("velocity")[i], v0[i]) << i;
         EXPECT_EQ(p.vectorField("acceleration")[i], a0[i]) << i;
+        EXPECT_TRUE(force[i].isZero()) << i;
     }
     for (auto s : ghosts.source) EXPECT_LT(x0[s][0], 0.25);
 }
@@ -63,7 +70,7 @@ void checkContract(const std::string& type) {
 
 TEST(BoundaryConditionContract, EveryTypeInEveryDimensionActsOnItsSelectionOnly) {
     const auto names = BoundaryCondition<1>::Selector::names();
-    ASSERT_GE(names.size(), 6u);
+    ASSERT_GE(names.size(), 8u);
     for (const auto& type : names) {
         checkContract<1>(type);
         checkContract<2>(type);

@@ -1,0 +1,146 @@
+// prescribedTraction: a traction t(t) [Pa] on the selected surface particles, which carry the
+// total force t A, A the loaded face's area, shared in proportion to their volumes:
+//     f_a = t A V_a / Σ_b V_b,   Σ_a f_a = t A.
+//   Lee, Gil, Greto, Karim & Bonet 2016 section 2.7 (tl-jst-sph.md 2.7, "natural BCs enter
+//   through E_a = (A_a/V_a) t_a"): A_a, the area particle a stands for, is not given there; on
+//   a nodal lattice with tributary volumes (NodalLattice.cpp) the face particles' volumes are
+//   Δx/2 times their tributary face areas, so A V_a/Σ V_b = A_a exactly, and f_a = A_a t a
+//   uniform traction. On other lattices the shares are an approximation of A_a.
+// The forces are boundary forces [N] per particle (hook addBoundaryForce): a total-Lagrangian
+// solver adds f_a/V_a to dp_a/dt, an updated-Lagrangian one f_a/m_a to dv_a/dt.
+//
+// The particles and V_a = mass/density are taken when the condition is built (the reference
+// volumes when built at the start of a run) and kept by globalId through reorders; a particle
+// the solver removes takes its share of the force with it.
+//
+// Usage: name { type prescribedTraction; regions (...); | shape { ... } | all yes;
+//               traction (0 -1e6 0); | table ((0 (0 0 0)) (1e-3 (0 -1e6 0)));
+//               area 0.25;  [releaseTime t;] }
+// A selection is required (the loaded face); the particle set needs the fields mass and density.
+#include "boundaryConditions/PrescribedTraction.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mfdyn {
+
+namespace {
+
+// A `(tx ty tz)` token as a Dim-vector; extra components must be zero, as for dictionary vectors.
+template <int Dim>
+Vector<Dim> vectorOf(const Token& token, const Dictionary& dict) {
+    if (token.kind != Token::Kind::list)
+        throw dict.error("table", "expected a vector (tx ty tz), found " + token.str());
+    Vector<Dim> v = Vector<Dim>::Zero();
+    for (std::size_t k = 0; k < token.list.size(); ++k) {
+        if (!token.list[k].isNumber())
+            throw dict.error("table", "expected a number, found " + token.list[k].str());
+        const double x = token.list[k].number();
+        if (int(k) < Dim)
+            v[k] = x;
+        else if (x != 0.0)
+            throw dict.error("table", "component " + std::to_string(k + 1) + " of " + token.str() +
+                                          " is non-zero but the case has fewer dimensions");
+    }
+    if (int(token.list.size()) < Dim)
+        throw dict.error("table", "expected " + std::to_string(Dim) + " components, found " + token.str());
+    return v;
+}
+
+}  // namespace
+
+template <int Dim>
+PrescribedTraction<Dim>::PrescribedTraction(const Dictionary& dict, const ParticleSet<Dim>& particles)
+    : BoundaryCondition<Dim>(dict, particles, false) {
+    const bool hasTraction = dict.found("traction"), hasTable = dict.found("table");
+    if (hasTraction == hasTable)
+        throw InputError(dict.where(), dict.scope(),
+                         "give exactly one of `traction (tx ty tz);` [Pa] and `table ((t (tx ty tz)) ...);`");
+    if (hasTraction) {
+        times_ = {0.0};
+        values_ = {dict.get<VectorType>("traction")};
+    } else {
+        const Entry& entry = dict.entry("table");
+        if (entry.tokens.size() != 1 || entry.tokens[0].kind != Token::Kind::list ||
+            entry.tokens[0].list.empty())
+            throw dict.error("table", "expected a list of (time (tx ty tz)) pairs");
+        for (const Token& row : entry.tokens[0].list) {
+            if (row.kind != Token::Kind::list || row.list.size() != 2 || !row.list[0].isNumber())
+                throw dict.error("table", "expected (time (tx ty tz)), found " + row.str());
+            const double t = row.list[0].number();
+            if (!times_.empty() && !(t > times_.back()))
+                throw dict.error("table", "times must increase, found " + row.list[0].str() + " after " +
+                                              std::to_string(times_.back()));
+            times_.push_back(t);
+            values_.push_back(vectorOf<Dim>(row.list[1], dict));
+        }
+    }
+    if (!dict.found("area"))
+        throw InputError(
+            dict.where(), dict.scope(),
+            "missing `area A;`: the area of the loaded face [m^2], which carries the total force "
+            "traction × area");
+    area_ = dict.get<double>("area");
+    if (!(area_ > 0.0) || !std::isfinite(area_)) throw dict.error("area", "expected an area > 0 [m^2]");
+
+    const auto* mass = particles.template findField<double>("mass");
+    const auto* density = particles.template findField<double>("density");
+    if (!mass || !density)
+        throw dict.error("type",
+                         "prescribedTraction shares the force by particle volume, mass/density: the "
+                         "particles need the fields `mass` and `density`");
+    const auto& id = particles.globalId();
+    double total = 0;
+    for (const std::size_t i : this->selection_.indices()) {
+        const double v = (*mass)[i] / (*density)[i];
+        if (!(v > 0.0) || !std::isfinite(v))
+            throw dict.error("type", "particle " + std::to_string(id[i]) + " has volume mass/density = " +
+                                         std::to_string(v) + "; expected > 0");
+        indices_.push_back(i);
+        ids_.push_back(id[i]);
+        share_.push_back(v);
+        total += v;
+    }
+    for (double& s : share_) s *= area_ / total;
+}
+
+template <int Dim>
+typename PrescribedTraction<Dim>::VectorType PrescribedTraction<Dim>::traction(double t) const {
+    if (t <= times_.front()) return values_.front();
+    if (t >= times_.back()) return values_.back();
+    const auto k = std::size_t(std::upper_bound(times_.begin(), times_.end(), t) - times_.begin()) - 1;
+    const double w = (t - times_[k]) / (times_[k + 1] - times_[k]);
+    return (1.0 - w) * values_[k] + w * values_[k + 1];
+}
+
+template <int Dim>
+void PrescribedTraction<Dim>::boundaryForce(const ParticleSet<Dim>&, std::vector<VectorType>& force,
+                                            double t) const {
+    const VectorType tr = traction(t);
+    for (std::size_t k = 0; k < indices_.size(); ++k) force[indices_[k]] += share_[k] * tr;
+}
+
+template <int Dim>
+void PrescribedTraction<Dim>::selectionUpdated(const ParticleSet<Dim>& particles) {
+    const auto index = this->indicesOf(particles, ids_);
+    std::vector<std::int64_t> ids;
+    std::vector<double> share;
+    indices_.clear();
+    for (std::size_t k = 0; k < ids_.size(); ++k)
+        if (index[k] != this->npos) {
+            indices_.push_back(index[k]);
+            ids.push_back(ids_[k]);
+            share.push_back(share_[k]);
+        }
+    ids_ = std::move(ids);
+    share_ = std::move(share);
+}
+
+template class PrescribedTraction<1>;
+template class PrescribedTraction<2>;
+template class PrescribedTraction<3>;
+
+MFDYN_REGISTER_DIM(BoundaryCondition, PrescribedTraction, "prescribedTraction",
+                   "traction t(t) on a face of given area, as forces shared by particle volume");
+
+}  // namespace mfdyn

@@ -1,0 +1,43 @@
+#pragma once
+// `prescribedTraction`: a traction t [Pa] on a face of area A [m^2] carried by the selected
+// surface particles, as boundary forces f_a = t A V_a / Σ_b V_b (addBoundaryForce hook).
+//
+//   traction (tx ty tz);                            constant [Pa], or
+//   table ((t0 (tx ty tz)) (t1 (tx ty tz)) ...);    piecewise linear in t [s], held constant
+//                                                   before the first and after the last time.
+//   area A;                                         the loaded face's area [m^2], required.
+//
+// The particles and their shares V_a/Σ V_b are fixed when the condition is built (V = mass /
+// density then) and kept by globalId through reorders. See PrescribedTraction.cpp.
+#include "boundaryConditions/BoundaryCondition.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace mfdyn {
+
+template <int Dim>
+class PrescribedTraction : public BoundaryCondition<Dim> {
+public:
+    using typename BoundaryCondition<Dim>::VectorType;
+    PrescribedTraction(const Dictionary& dict, const ParticleSet<Dim>& particles);
+
+    // t(t) [Pa].
+    VectorType traction(double t) const;
+    double area() const { return area_; }
+
+protected:
+    void boundaryForce(const ParticleSet<Dim>& particles, std::vector<VectorType>& force,
+                       double t) const override;
+    void selectionUpdated(const ParticleSet<Dim>& particles) override;
+
+private:
+    std::vector<double> times_;
+    std::vector<VectorType> values_;
+    double area_ = 0;
+    std::vector<std::int64_t> ids_;     // globalId of the loaded particles
+    std::vector<std::size_t> indices_;  // their current indices
+    std::vector<double> share_;         // A V_a / Σ V_b [m^2]
+};
+
+}  // namespace mfdyn
