@@ -26,6 +26,7 @@
 
 #include "core/Log.hpp"
 #include "core/Parallel.hpp"
+#include "solver/MaterialAssignment.hpp"
 #include "solver/SolverRun.hpp"
 
 #include <algorithm>
@@ -148,52 +149,17 @@ SphSolver<Dim>::~SphSolver() = default;
 template <int Dim>
 void SphSolver<Dim>::readMaterials() {
     const Dictionary& all = materialProperties_.subDict("materials");
-    for (const auto& entry : all.entries()) {
-        if (!entry->isDict()) throw all.error(entry->key, "expected a material dictionary");
-        const Dictionary& m = all.subDict(entry->key);
-        materials_.push_back({entry->key, EquationOfState::New(m.subDict("equationOfState")), nullptr});
+    const std::vector<std::string> names = materialNames(materialProperties_);
+    for (const auto& name : names) {
+        const Dictionary& m = all.subDict(name);
+        materials_.push_back({name, EquationOfState::New(m.subDict("equationOfState")), nullptr});
         if (materials_.back().eos->needsEnergy()) needsEnergy_ = true;
         if (const Dictionary* strength = m.findDict("strength")) {
             auto law = Strength<Dim>::New(*strength);
             if (law->allocatesStress()) materials_.back().strength = std::move(law), anyStrength_ = true;
         }
     }
-    if (materials_.empty()) throw all.error("", "no materials defined");
-    std::vector<std::string> names;
-    for (const auto& m : materials_) names.push_back(m.name);
-    auto indexOf = [&](const std::string& name) -> std::int64_t {
-        for (std::size_t k = 0; k < names.size(); ++k)
-            if (names[k] == name) return std::int64_t(k);
-        return -1;
-    };
-    auto valid = [&] {
-        std::string s;
-        for (const auto& n : names) s += " " + n;
-        return s;
-    };
-
-    // Material of each particle: the file's material names, else region names, else the only one.
-    const auto& fileNames = particles_->materialNames;
-    const auto& regionNames = particles_->regionNames;
-    const auto& region = particles_->region();
-    const bool fromFile = !fileNames.empty();
-    std::vector<std::int64_t> map;
-    const auto& source = fromFile ? fileNames : regionNames;
-    for (const auto& name : source) map.push_back(indexOf(name));
-    for (std::size_t i = 0; i < x_.size(); ++i) {
-        const std::int64_t id = fromFile ? material_[i] : region[i];
-        std::int64_t k = (id >= 0 && std::size_t(id) < map.size()) ? map[id] : -1;
-        if (k < 0 && materials_.size() == 1) k = 0;
-        if (k < 0) {
-            const std::string name = (id >= 0 && std::size_t(id) < source.size()) ? source[id] : std::to_string(id);
-            throw materialProperties_.error("materials", "particle " + std::to_string(particles_->globalId()[i]) +
-                                                             " has material/region '" + name +
-                                                             "', which constant/materialProperties does not define; "
-                                                             "materials:" + valid());
-        }
-        material_[i] = k;
-    }
-    particles_->materialNames = names;
+    assignMaterials(*particles_, names, materialProperties_);
 }
 
 template <int Dim>
