@@ -1,0 +1,71 @@
+// cantileverMode: the oscillating plate of Gray, Monaghan & Swift 2001 ("SPH elastic dynamics",
+// Comput. Methods Appl. Mech. Engrg. 190:6641, section 6.2), as set up by PySPH's
+// oscillating_plate example: a plate along X, clamped at X = clampX, free at clampX + L, given
+// the velocity of the first bending mode of an Euler-Bernoulli cantilever,
+//
+//     v_y(s) = V_f f(s)/f(L),   f(s) = M (cos ks - cosh ks) - N (sin ks - sinh ks),
+//     M = sin kL + sinh kL,  N = cos kL + cosh kL,  f(L) = 2 (cos kL sinh kL - sin kL cosh kL),
+//
+// s = X - clampX, k = kL/L with kL = 1.875 (the root of 1 + cos kL cosh kL = 0), so v_y(L) = V_f
+// at the free end, v_y = v_y' = 0 at the clamp; v_y = 0 for s <= 0 (inside the clamp), v_x = 0.
+// PySPH's Vf is a fraction of the sound speed (tip velocity Vf c0); here `velocity` is the tip
+// velocity itself in m/s. Thin plates (thickness << length) only: the shape ignores shear.
+//
+//     keyword    meaning                                         required  default
+//     length     L [m], > 0                                      yes
+//     velocity   V_f, transverse velocity at the free end [m/s]  yes
+//     thickness  plate thickness [m], 0 < thickness < length     no        (only checked)
+//     kL         mode number k L                                 no        1.875
+//     clampX     X of the clamped end [m]                        no        0
+// 2D and 3D (transverse direction y).
+#include "solver/CantileverMode.hpp"
+
+#include <cmath>
+
+namespace mfdyn {
+
+template <int Dim>
+CantileverMode<Dim>::CantileverMode(const Dictionary& dict)
+    : InitialState<Dim>(dict),
+      length_(dict.get<double>("length")),
+      velocity_(dict.get<double>("velocity")),
+      kL_(dict.getOrDefault<double>("kL", 1.875)),
+      clampX_(dict.getOrDefault<double>("clampX", 0.0)) {
+    if (Dim < 2) throw dict.error("type", "cantileverMode needs a 2D or 3D case (the plate bends in y)");
+    if (!(length_ > 0)) throw dict.error("length", "expected a positive length [m]");
+    if (!(kL_ > 0)) throw dict.error("kL", "expected a positive mode number");
+    if (auto thickness = dict.getOptional<double>("thickness"))
+        if (!(*thickness > 0 && *thickness < length_))
+            throw dict.error("thickness", "expected 0 < thickness < length");
+    if (!std::isfinite(velocity_)) throw dict.error("velocity", "expected a finite velocity [m/s]");
+}
+
+template <int Dim>
+double CantileverMode<Dim>::shape(double s) const {
+    const double k = kL_ / length_, kL = kL_;
+    const double M = std::sin(kL) + std::sinh(kL), N = std::cos(kL) + std::cosh(kL);
+    return M * (std::cos(k * s) - std::cosh(k * s)) - N * (std::sin(k * s) - std::sinh(k * s));
+}
+
+template <int Dim>
+double CantileverMode<Dim>::transverseVelocity(double s) const {
+    if (s <= 0) return 0.0;
+    return velocity_ * shape(s) / shape(length_);
+}
+
+template <int Dim>
+Vector<Dim> CantileverMode<Dim>::velocity(const Vector<Dim>& X) const {
+    Vector<Dim> v = Vector<Dim>::Zero();
+    if constexpr (Dim >= 2) v(1) = transverseVelocity(X(0) - clampX_);
+    return v;
+}
+
+template class CantileverMode<1>;
+template class CantileverMode<2>;
+template class CantileverMode<3>;
+
+MFDYN_REGISTER_DIM(
+    InitialState, CantileverMode, "cantileverMode",
+    "first bending mode velocity of a clamped plate (Gray, Monaghan & Swift 2001; PySPH oscillating_plate)");
+
+}  // namespace mfdyn
