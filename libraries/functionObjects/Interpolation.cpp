@@ -57,9 +57,18 @@ std::string Interpolation::methodName(Method method) {
     return method == Method::mls ? "mls" : "shepard";
 }
 
-Interpolation::Interpolation(const Dictionary& dict, const FieldStore& particles)
+Interpolation::Interpolation(const Dictionary& dict, const FieldStore& particles,
+                             const std::string& defaultPositionField, Method defaultMethod)
     : particles_(particles), dim_(particles.dimension()) {
-    const std::string method = dict.getOrDefault<std::string>("interpolation", "shepard");
+    positionField_ = dict.getOrDefault<std::string>("positionField", defaultPositionField);
+    const FieldBase* position = particles.findField(positionField_);
+    if (!position || position->components() != dim_) {
+        std::string message = "no " + std::to_string(dim_) + "-component vector field '" + positionField_ +
+                              "' in these particles; fields:";
+        for (const auto& name : particles.fieldNames()) message += " " + name;
+        throw dict.error("positionField", message);
+    }
+    const std::string method = dict.getOrDefault<std::string>("interpolation", methodName(defaultMethod));
     if (method == "shepard")
         method_ = Method::shepard;
     else if (method == "mls")
@@ -85,8 +94,8 @@ Interpolation::Interpolation(const Dictionary& dict, const FieldStore& particles
 
 void Interpolation::update() {
     const std::size_t n = particles_.size();
-    const FieldBase* position = particles_.findField("position");
-    if (!position) throw Error("interpolation: the particles have no position field");
+    const FieldBase* position = particles_.findField(positionField_);
+    if (!position) throw Error("interpolation: the particles have no " + positionField_ + " field");
     position_.assign(n, SamplePoint{0.0, 0.0, 0.0});
     for (std::size_t i = 0; i < n; ++i)
         for (int c = 0; c < dim_; ++c) position_[i][c] = position->component(i, c);

@@ -5,11 +5,14 @@
 //     interpolation shepard;            // shepard | mls
 //     kernel { type wendlandC2; }       // any registered kernel (default wendlandC2)
 //     h 0.02;                           // smoothing length; else the particles' smoothingLength field
+//     positionField referencePosition;  // interpolate in the reference configuration
 //
 //     keyword        meaning                                                   required  default
 //     interpolation  shepard (kernel-weighted average) | mls (first-order MLS)  no        shepard
 //     kernel         kernel sub-dictionary (Kernel.hpp)                        no        wendlandC2
 //     h              smoothing length [m]; overrides a smoothingLength field    no        field
+//     positionField  vector field giving the particles' coordinates            no        position
+//                    (referencePosition: total-Lagrangian reference config.)
 //
 // Both methods are linear in the particle values, f(x) = sum_j phi_j(x) f_j, so the weights
 // phi_j of a point are found once (one neighbour search, one small solve) and applied to every
@@ -51,14 +54,17 @@ public:
     };
 
     // Reads the keywords above from `dict`; `particles` must outlive this object. Positions,
-    // smoothing lengths and volumes are taken now and at each update().
-    Interpolation(const Dictionary& dict, const FieldStore& particles);
+    // smoothing lengths and volumes are taken now and at each update(). `defaultPositionField`
+    // and `defaultMethod` are what positionField and interpolation default to.
+    Interpolation(const Dictionary& dict, const FieldStore& particles,
+                  const std::string& defaultPositionField = "position", Method defaultMethod = Method::shepard);
     ~Interpolation();
     // After the particles moved (or changed in number): read them again and re-bin, keeping
     // the kernel, whose tables are costly to build.
     void update();
 
     Method method() const { return method_; }
+    const std::string& positionField() const { return positionField_; }
     const Kernel& kernel() const { return *kernel_; }
 
     // The weights at each point.
@@ -82,6 +88,7 @@ private:
     Method method_;
     std::unique_ptr<Kernel> kernel_;
     std::optional<double> hKeyword_;
+    std::string positionField_;
     std::vector<SamplePoint> position_;  // zero-padded to 3 components
     std::vector<double> h_;              // per particle
     std::vector<double> volume_;         // per particle
