@@ -1,5 +1,7 @@
 #include "solver/InitialState.hpp"
 
+#include "geometry/Shape.hpp"
+
 #include "core/Parallel.hpp"
 
 #include <algorithm>
@@ -59,6 +61,12 @@ void InitialState<Dim>::apply(ParticleSet<Dim>& particles, const std::vector<Vec
         const auto& region = particles.region();
         for (std::size_t i = 0; i < n; ++i)
             selected[i] = std::find(ids.begin(), ids.end(), region[i]) != ids.end();
+    }
+
+    // `shape { ... }` narrows the selection to the particles whose reference position is inside.
+    if (const Dictionary* shapeDict = dict_.findDict("shape")) {
+        const auto shape = Shape::New(*shapeDict, Dim);
+        for (std::size_t i = 0; i < n; ++i) selected[i] = selected[i] && shape->inside(X[i].data());
     }
 
     auto& x = particles.position();

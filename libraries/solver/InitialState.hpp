@@ -12,6 +12,7 @@
 //     keyword  meaning                                                        required  default
 //     type     one of the models above                                        yes
 //     regions  names of the particle regions it applies to                    no        all particles
+//     shape    a shape (geometry/Shape.hpp) the reference position must be inside     no        everywhere
 //
 // The models' own keywords are in their .cpp files. A model gives u(X) (zero unless
 // hasDisplacement()), v(X) and grad u(X) = du_i/dX_J; apply() writes them to the particles.

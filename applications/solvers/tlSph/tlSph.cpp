@@ -1,0 +1,18 @@
+// tlSph: total-Lagrangian mixed {p, F, H, J} SPH with JST stabilisation for large-strain solid
+// dynamics (Lee et al. 2016). See libraries/tlSph/TlSphSolver.hpp and tutorials/tlSph/.
+#include "core/Application.hpp"
+#include "solver/SolverRun.hpp"
+#include "tlSph/TlSphSolver.hpp"
+
+int main(int argc, char** argv) {
+    const mfdyn::ApplicationInfo info{
+        "tlSph",
+        "Total-Lagrangian mixed {p,F,H,J} JST-SPH for large-strain solid dynamics (constant/tlSphProperties, "
+        "constant/materialProperties).",
+        {},
+        {},
+        true};
+    return mfdyn::runApplication(argc, argv, info, [](const mfdyn::Arguments& args) {
+        return mfdyn::runSolver<mfdyn::TlSphSolver>(args, "tlSph");
+    });
+}

@@ -1,0 +1,14 @@
+#pragma once
+#include "tlSph/TlDissipation.hpp"
+
+namespace mfdyn {
+
+// No dissipation: the unstabilised mixed SPH (hourglass modes and shock oscillations left alone).
+class NoTlDissipation final : public TlDissipation {
+public:
+    explicit NoTlDissipation(const Dictionary&) {}
+    TlDissipationCoefficients coefficients() const override { return {}; }
+    std::string describe() const override { return "none"; }
+};
+
+}  // namespace mfdyn

@@ -1,0 +1,689 @@
+// tlSph (Lee, Gil, Greto, Kulasegaram, Bonet 2016, CMAME 311; tl-jst-sph.md 2.3-2.8). With
+// g_ab = grad~W_b(X_a) the corrected kernel gradient in the reference configuration, V_a the
+// reference volume, p = rho0 v:
+//
+//   G_a   = sum_b V_b (v_b - v_a) (x) g_ab                    grad0(p/rho0), the velocity gradient
+//   T_a   = sum_b V_b [P_b g_ba - P_a g_ab]                   (29c) internal force, ~ -DIV P
+//   dp/dt = -T_a + D(p_a) + E_a,   E_a = rho0 g + (boundary force)/V_a                     (41)
+//   dF/dt = G_a,   dH/dt = F_a x G_a,   dJ/dt = H_a : G_a + D(J_a),   dx/dt = v_a
+//   D(U)  = eps2 c_p h L[U] - eps4 c_p h^3 L^2[U],  L[U]_a = sum_b V_b (U_b - U_a) Lap~W_b(X_a)
+//
+// Projections at each stage (eqs. 45-51): -T + D(p) is projected to zero total force and zero
+// total moment about x~ (x~ = x^n at stage 1, x^n + dt/2 (v^n + v*) = x^{n+1} at stage 2, which
+// makes the step's angular momentum change (dt/2)[sum V x^n x p'^n + sum V x^{n+1} x p'^*]
+// vanish exactly); D(J) has its volume mean removed. Then the essential boundary conditions act
+// on dp/dt (and on p after each update): the direct method of 2.7.
+//
+// TVD RK2 (43-44) on U = {p, F, H, J, x}:  U* = U^n + dt U'(U^n);  U** = U* + dt U'(U*);
+// U^{n+1} = (U^n + U**)/2; then P^{n+1} from (F, H, J)^{n+1}, advancing the plastic state.
+//
+// Below three dimensions the body is in plane strain (2D) or uniaxial strain (1D): F is embedded
+// in 3x3 with unit out-of-plane stretch, H's out-of-plane diagonal is that of cof(F) (in plane
+// strain H_zz = det F_2D exactly), and the laws see 3x3 tensors.
+#include "tlSph/TlSphSolver.hpp"
+
+#include "boundaryConditions/SkewSymmetricPlane.hpp"
+#include "boundaryConditions/SymmetryPlane.hpp"
+#include "core/Log.hpp"
+#include "core/Parallel.hpp"
+#include "solver/InitialState.hpp"
+#include "solver/MaterialAssignment.hpp"
+#include "solver/SolverRun.hpp"
+#include "tlSph/MomentumProjection.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <type_traits>
+
+namespace mfdyn {
+
+namespace {
+
+template <int Dim>
+std::unique_ptr<ParticleSet<Dim>> adopt(std::unique_ptr<ParticleSetBase> base) {
+    particleSetCast<Dim>(*base);
+    return std::unique_ptr<ParticleSet<Dim>>(static_cast<ParticleSet<Dim>*>(base.release()));
+}
+
+template <int Dim>
+std::vector<double>& requireScalar(ParticleSet<Dim>& p, const std::string& name, const std::string& why) {
+    if (!p.hasField(name)) {
+        std::string have;
+        for (const auto& n : p.fieldNames()) have += " " + n;
+        throw InputError("the particle file has no field '" + name + "' (" + why + "); fields:" + have);
+    }
+    return p.scalarField(name);
+}
+
+// A Dim x Dim tensor in 3x3, the rest of the diagonal `fill`.
+template <int Dim>
+Tensor<3> embed(const Tensor<Dim>& a, double fill) {
+    Tensor<3> t = Tensor<3>::Identity() * fill;
+    t.template topLeftCorner<Dim, Dim>() = a;
+    return t;
+}
+
+template <int Dim>
+Tensor<Dim> inPlane(const Tensor<3>& a) {
+    return a.template topLeftCorner<Dim, Dim>();
+}
+
+bool readSwitch(const Dictionary* dict, const char* key) {
+    return dict ? dict->getOrDefault<bool>(key, true) : true;
+}
+
+}  // namespace
+
+template <int Dim>
+TlSphSolver<Dim>::TlSphSolver(SolverRun& run)
+    : Solver(run),
+      owner_(adopt<Dim>(run.takeParticles())),
+      particles_(owner_.get()),
+      properties_(run.runCase().readConstant("tlSphProperties")),
+      materialProperties_(run.runCase().readConstant("materialProperties")),
+      kernel_(Kernel::New(properties_.subDict("kernel"))),
+      formulation_(Formulation::New(properties_.subDict("formulation"))),
+      dissipationModel_(TlDissipation::New(properties_.subDict("dissipation"))),
+      dissipation_(dissipationModel_->coefficients()),
+      x_(particles_->position()),
+      v_(particles_->vectorField("velocity")),
+      m_(requireScalar(*particles_, "mass", "particle masses")),
+      rho0_(requireScalar(*particles_, "density", "the reference density rho0")) {
+    const Dictionary* projection = properties_.findDict("projection");
+    projectMomentum_ = readSwitch(projection, "momentum");
+    projectDissipation_ = readSwitch(projection, "dissipation");
+    projectJacobian_ = readSwitch(projection, "jacobian");
+    alphaCFL_ = properties_.getOrDefault<double>("alphaCFL", 0.3);
+    if (!(alphaCFL_ > 0 && alphaCFL_ <= 1)) throw properties_.error("alphaCFL", "alphaCFL must be in (0, 1]");
+    if (properties_.found("gravity")) gravity_ = properties_.get<Vector<Dim>>("gravity");
+    readMaterials();
+    initialiseFields(run);
+}
+
+template <int Dim>
+TlSphSolver<Dim>::~TlSphSolver() = default;
+
+template <int Dim>
+void TlSphSolver<Dim>::readMaterials() {
+    const Dictionary& all = materialProperties_.subDict("materials");
+    lawNames_ = materialNames(materialProperties_);
+    for (const auto& name : lawNames_) {
+        const Dictionary& m = all.subDict(name);
+        laws_.push_back(ConstitutiveLaw::New(m.subDict("constitutiveLaw")));
+        plastic_ = plastic_ || laws_.back()->usesPlasticState();
+        Log::info("Material " + name + ": " + laws_.back()->describe());
+    }
+    assignMaterials(*particles_, lawNames_, materialProperties_);
+    material_ = &particles_->integerField("material");
+}
+
+template <int Dim>
+void TlSphSolver<Dim>::initialiseFields(SolverRun& run) {
+    const std::size_t n = x_.size();
+    V_.resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!(m_[i] > 0) || !(rho0_[i] > 0))
+            throw InputError("particle " + std::to_string(particles_->globalId()[i]) + " has mass " +
+                             std::to_string(m_[i]) + " and density " + std::to_string(rho0_[i]) +
+                             ": both must be positive");
+        const double lawRho0 = laws_[(*material_)[i]]->referenceDensity();
+        if (std::abs(rho0_[i] - lawRho0) > 1e-9 * lawRho0)
+            throw materialProperties_.error(
+                "materials", "particle " + std::to_string(particles_->globalId()[i]) + " has density " +
+                                 std::to_string(rho0_[i]) + " but its material '" +
+                                 lawNames_[(*material_)[i]] + "' has rho0 " + std::to_string(lawRho0) +
+                                 ": generate the particles with the material's density");
+        V_[i] = m_[i] / rho0_[i];
+    }
+    // A fresh start has no reference configuration yet: X is where the particles were generated.
+    const bool fresh = !particles_->hasField("referencePosition");
+    X_ = &particles_->vectorField("referencePosition");
+    if (fresh) *X_ = x_;
+    const bool hadF = particles_->hasField("deformationGradient");
+    F_ = &particles_->tensorField("deformationGradient");
+    if (!hadF) std::fill(F_->begin(), F_->end(), Tensor<Dim>::Identity());
+    if (fresh)
+        if (const Dictionary* init = properties_.findDict("initialState")) {
+            InitialState<Dim>::New(*init)->apply(*particles_, *X_);
+            Log::info("Initial state: " + init->get<std::string>("type"));
+        }
+    if (formulation_->evolvesH()) {
+        const bool had = particles_->hasField("cofactor");
+        H_ = &particles_->tensorField("cofactor");
+        if (!had)
+            for (std::size_t i = 0; i < n; ++i) {
+                const Tensor<3> F3 = embed<Dim>((*F_)[i], 1.0);
+                (*H_)[i] = inPlane<Dim>(0.5 * tensorCross(F3, F3));
+            }
+    }
+    if (formulation_->evolvesJ()) {
+        const bool had = particles_->hasField("jacobian");
+        J_ = &particles_->scalarField("jacobian");
+        if (!had)
+            for (std::size_t i = 0; i < n; ++i) (*J_)[i] = (*F_)[i].determinant();
+    }
+    P_ = &particles_->tensorField("firstPiolaStress");
+    pressure_ = &particles_->scalarField("pressure");
+    if (plastic_) {
+        const bool had = particles_->hasField("plasticDeformation");
+        plasticDeformation_ = &particles_->symmTensorField("plasticDeformation");
+        if (Dim < 3) plasticOutOfPlane_ = &particles_->scalarField("plasticDeformationOutOfPlane");
+        plasticStrain_ = &particles_->scalarField("plasticStrain");
+        if (!had)
+            for (std::size_t i = 0; i < n; ++i) {
+                (*plasticDeformation_)[i] = SymmTensor<Dim>::fromFull(Tensor<Dim>::Identity());
+                if (plasticOutOfPlane_) (*plasticOutOfPlane_)[i] = 1.0;
+            }
+    }
+
+    // Spacing (h_min of the paper) and smoothing length.
+    double largest = 0;
+    for (double v : V_) largest = std::max(largest, v);
+    spacing_ = properties_.getOrDefault<double>("spacing", std::pow(largest, 1.0 / Dim));
+    if (!(spacing_ > 0)) throw properties_.error("spacing", "the particle spacing must be positive");
+    const double ratio = properties_.getOrDefault<double>("smoothingLengthRatio", 1.3);
+    if (!(ratio > 0)) throw properties_.error("smoothingLengthRatio", "must be positive");
+    h_ = ratio * spacing_;
+    // For sampling and the interpolating function objects (sample, probes, swingingCubeError).
+    auto& smoothingLength = particles_->scalarField("smoothingLength");
+    std::fill(smoothingLength.begin(), smoothingLength.end(), h_);
+    // The boundary conditions pick their particles from the initial state (skewSymmetricPlane
+    // from the reference positions), so they are built after it.
+    if (std::filesystem::exists(run.runCase().constantFile("boundaryConditions"))) {
+        boundaryDict_ = run.runCase().readConstant("boundaryConditions");
+        boundaries_ = BoundaryConditionList<Dim>(*boundaryDict_, *particles_);
+        Log::info("Boundary conditions:\n" + boundaries_.summary());
+    }
+    makeMirrorGhosts();
+    typename ReferenceOperators<Dim>::Options options;
+    options.gradient = properties_.found("gradient") ? gradientCorrectionFromName(properties_, "gradient")
+                                                     : GradientCorrection::corrected;
+    options.laplacian = true;
+    Stopwatch watch;
+    std::vector<Vector<Dim>> Xall(*X_);
+    Xall.insert(Xall.end(), ghostPosition_.begin(), ghostPosition_.end());
+    operators_ = std::make_unique<ReferenceOperators<Dim>>(Xall, V_, h_, *kernel_, options);
+    for (const auto& law : laws_) cpMax_ = std::max(cpMax_, law->pWaveSpeed());
+
+    // P and the pressure of the initial state, for the first write and the function objects.
+    if (formulation_->displacementBased()) computeDisplacementGradient();
+    computeStress(false);
+
+    acceleration_.assign(n, Vector<Dim>::Zero());
+    dFdt_.assign(n, Tensor<Dim>::Zero());
+    if (H_) dHdt_.assign(n, Tensor<Dim>::Zero());
+    if (J_) dJdt_.assign(n, 0.0);
+    if (dissipation_.momentum2 || dissipation_.momentum4 || dissipation_.viscosity)
+        lapP_.assign(n, Vector<Dim>::Zero());
+    if (dissipation_.momentum4) lap2P_.assign(n, Vector<Dim>::Zero());
+    if (J_ && (dissipation_.jacobian2 || dissipation_.jacobian4)) lapJ_.assign(n, 0.0);
+    if (J_ && dissipation_.jacobian4) lap2J_.assign(n, 0.0);
+
+    std::ostringstream s;
+    s << "tlSph: formulation " << formulation_->name() << ", kernel " << kernel_->type() << ", spacing "
+      << spacing_ << ", h " << h_ << ", "
+      << operators_->neighbours().pairCount() / std::max<std::size_t>(1, n)
+      << " neighbours per particle (reference configuration, " << watch.seconds() << " s), c_p,max " << cpMax_
+      << " m/s, dissipation " << dissipationModel_->describe() << ", projections: momentum "
+      << (projectMomentum_ ? "yes" : "no") << ", dissipation " << (projectDissipation_ ? "yes" : "no")
+      << ", jacobian " << (projectJacobian_ ? "yes" : "no");
+    Log::info(s.str());
+    const double floor = alphaCFL_ * alphaCFL_ * alphaCFL_ / 8;
+    if (dissipation_.momentum4 > 0 && dissipation_.momentum4 <= floor)
+        Log::warning(
+            "JST momentum eps4 " + std::to_string(dissipation_.momentum4) +
+            " is at or below alphaCFL^3/8 = " + std::to_string(floor) +
+            ": the RK2 scheme is then anti-diffusive at the shortest wavelengths (tl-jst-sph.md App. C)");
+}
+
+template <int Dim>
+Tensor<3> TlSphSolver<Dim>::cofactor3(std::size_t i) const {
+    const Tensor<3> F3 = embed<Dim>((*F_)[i], 1.0);
+    Tensor<3> H3 = 0.5 * tensorCross(F3, F3);
+    if (H_) H3.template topLeftCorner<Dim, Dim>() = (*H_)[i];
+    return H3;
+}
+
+template <int Dim>
+void TlSphSolver<Dim>::computeStress(bool updateState) {
+    Stopwatch watch;
+    parallelFor(x_.size(), [&](std::size_t i) {
+        const Tensor<3> F3 = embed<Dim>((*F_)[i], 1.0);
+        const Tensor<3> H3 = cofactor3(i);
+        const double J = J_ ? (*J_)[i] : F3.determinant();
+        Tensor<3> P3;
+        double pressure = 0;
+        SymmTensor<3> cp;
+        double epsP = 0;
+        ConstitutiveLaw::Fields f;
+        f.size = 1, f.F = &F3, f.H = &H3, f.J = &J, f.P = &P3, f.pressure = &pressure;
+        const auto& law = *laws_[(*material_)[i]];
+        if (law.usesPlasticState()) {
+            const Tensor<Dim> c = (*plasticDeformation_)[i].full();
+            cp = SymmTensor<3>::fromFull(embed<Dim>(c, plasticOutOfPlane_ ? (*plasticOutOfPlane_)[i] : 1.0));
+            epsP = (*plasticStrain_)[i];
+            f.plasticState = &cp, f.plasticStrain = &epsP;
+        }
+        law.stress(f, updateState);
+        if (updateState && law.usesPlasticState()) {
+            const Tensor<3> c = cp.full();
+            (*plasticDeformation_)[i] = SymmTensor<Dim>::fromFull(inPlane<Dim>(c));
+            if (plasticOutOfPlane_) (*plasticOutOfPlane_)[i] = c(2, 2);
+            (*plasticStrain_)[i] = epsP;
+        }
+        (*P_)[i] = inPlane<Dim>(P3);
+        (*pressure_)[i] = pressure;
+    });
+    stressSeconds_ += watch.seconds();
+}
+
+template <int Dim>
+void TlSphSolver<Dim>::makeMirrorGhosts() {
+    if (!properties_.getOrDefault<bool>("mirrorGhosts", true)) return;
+    struct Mirror {
+        const Plane<Dim>* plane;
+        double parity;
+    };
+    std::vector<Mirror> mirrors;
+    for (std::size_t k = 0; k < boundaries_.size(); ++k) {
+        if (const auto* c = dynamic_cast<const SymmetryPlane<Dim>*>(&boundaries_[k]))
+            mirrors.push_back({&c->plane(), 1.0});
+        else if (const auto* c = dynamic_cast<const SkewSymmetricPlane<Dim>*>(&boundaries_[k]))
+            mirrors.push_back({&c->plane(), -1.0});
+    }
+    if (mirrors.empty()) return;
+    // Deep enough that a ghost within the support of a real particle has its whole support
+    // (real and ghost) inside the extended body: its corrected gradient is then the mirror image
+    // of its source's.
+    const double depth = 2.0 * kernel_->supportRadius(h_);
+    const std::size_t n = x_.size();
+    std::vector<Vector<Dim>> position(*X_);
+    std::vector<std::size_t> source(n);
+    std::vector<Tensor<Dim>> map(n, Tensor<Dim>::Identity());
+    std::vector<double> parity(n, 1.0);
+    for (std::size_t i = 0; i < n; ++i) source[i] = i;
+    // Planes in the order written; images of images make the corners and edges.
+    for (const auto& mirror : mirrors) {
+        const Vector<Dim>& normal = mirror.plane->normal();
+        const Tensor<Dim> reflection = Tensor<Dim>::Identity() - 2.0 * normal * normal.transpose();
+        const std::size_t count = position.size();
+        for (std::size_t i = 0; i < count; ++i) {
+            const double d = mirror.plane->signedDistance(position[i]);
+            if (d <= mirror.plane->tolerance() || d >= depth) continue;  // on the plane: its own image
+            position.push_back(mirror.plane->mirror(position[i]));
+            source.push_back(source[i]);
+            map.push_back(Tensor<Dim>(reflection * map[i]));
+            parity.push_back(mirror.parity * parity[i]);
+        }
+    }
+    // A particle on a plane carries half (a quarter on an edge, ...) of its dual cell: the other
+    // part is its own image's. In the extended body it is interior, so as a neighbour it counts
+    // with its whole cell. (Its own equation is per unit volume and does not change.)
+    for (std::size_t i = 0; i < n; ++i)
+        for (const auto& mirror : mirrors)
+            if (std::abs(mirror.plane->signedDistance((*X_)[i])) <= mirror.plane->tolerance()) V_[i] *= 2.0;
+    ghostPosition_.assign(position.begin() + long(n), position.end());
+    ghostSource_.assign(source.begin() + long(n), source.end());
+    ghostMap_.assign(map.begin() + long(n), map.end());
+    ghostParity_.assign(parity.begin() + long(n), parity.end());
+    for (std::size_t g = 0; g < ghostSource_.size(); ++g) V_.push_back(V_[ghostSource_[g]]);
+    // Reactions of the planes reach the body through the ghosts: the internal forces no longer
+    // sum to zero over the real particles, and projecting them would remove the reactions.
+    if (!ghostSource_.empty() && (projectMomentum_ || projectDissipation_)) {
+        projectMomentum_ = projectDissipation_ = false;
+        Log::info("Momentum projections off: the symmetry planes' mirror ghosts carry their reactions");
+    }
+    Log::info("Mirror ghosts: " + std::to_string(ghostSource_.size()) + " reference images across " +
+              std::to_string(mirrors.size()) + " symmetry/skew-symmetric planes (depth " +
+              std::to_string(depth) + ")");
+}
+
+template <int Dim>
+template <class T>
+const T* TlSphSolver<Dim>::withGhosts(const std::vector<T>& real, std::vector<T>& all, GhostMap kind) const {
+    if (ghostSource_.empty()) return real.data();
+    const std::size_t n = real.size(), g = ghostSource_.size();
+    all.resize(n + g);
+    std::copy(real.begin(), real.end(), all.begin());
+    parallelFor(g, [&](std::size_t k) {
+        const T& a = real[ghostSource_[k]];
+        const double s = ghostParity_[k];
+        const Tensor<Dim>& Q = ghostMap_[k];
+        // (In 1D a vector and a tensor are one type: the kind, not the type, decides.)
+        if constexpr (std::is_same_v<T, double>) {
+            all[n + k] = kind == GhostMap::deformation ? 1.0 + s * (a - 1.0)
+                         : kind == GhostMap::copy      ? a
+                                                       : s * a;
+        } else if constexpr (T::ColsAtCompileTime == 1 && Dim > 1) {
+            all[n + k] = kind == GhostMap::copy ? a : T(s * (Q * a));
+        } else {
+            switch (kind) {
+                case GhostMap::vector:
+                    all[n + k] = s * (Q * a);
+                    break;
+                case GhostMap::tensor:
+                    all[n + k] = s * Q * a * Q.transpose();
+                    break;
+                case GhostMap::deformation:
+                    all[n + k] =
+                        Tensor<Dim>::Identity() + s * Q * (a - Tensor<Dim>::Identity()) * Q.transpose();
+                    break;
+                case GhostMap::copy:
+                    all[n + k] = a;
+                    break;
+            }
+        }
+    });
+    return all.data();
+}
+
+template <int Dim>
+void TlSphSolver<Dim>::computeDisplacementGradient() {
+    const auto& rows = operators_->neighbours();
+    const auto& g = operators_->gradient();
+    const auto& offsets = rows.offsets();
+    std::vector<Vector<Dim>> uReal(x_.size()), uAll;
+    for (std::size_t i = 0; i < x_.size(); ++i) uReal[i] = x_[i] - (*X_)[i];
+    const Vector<Dim>* u = withGhosts(uReal, uAll, GhostMap::vector);
+    auto& F = *F_;
+    parallelFor(x_.size(), [&](std::size_t a) {
+        Tensor<Dim> grad = Tensor<Dim>::Zero();
+        for (std::size_t k = offsets[a]; k < offsets[a + 1]; ++k)
+            grad += V_[rows.indices()[k]] * (u[rows.indices()[k]] - u[a]) * g[k].transpose();
+        F[a] = Tensor<Dim>::Identity() + grad;
+    });
+}
+
+template <int Dim>
+void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, double t) {
+    if (formulation_->displacementBased()) computeDisplacementGradient();
+    computeStress(false);
+    Stopwatch watch;
+    const std::size_t n = x_.size();
+    const auto& rows = operators_->neighbours();
+    const auto& offsets = rows.offsets();
+    const auto& g = operators_->gradient();
+    const auto& gAtNeighbour = operators_->gradientAtNeighbour();
+    const auto& lap = operators_->laplacian();
+    // Real particles first, then their mirror images (none without symmetry planes).
+    const Vector<Dim>* v = withGhosts(v_, vAll_, GhostMap::vector);
+    const Tensor<Dim>* P = withGhosts(*P_, PAll_, GhostMap::tensor);
+    const double* J = J_ ? withGhosts(*J_, JAll_, GhostMap::deformation) : nullptr;
+    const double* rho0 = withGhosts(rho0_, rho0All_, GhostMap::copy);
+    const bool lapMomentum = !lapP_.empty(), lapJacobian = !lapJ_.empty();
+    std::vector<Vector<Dim>> force(n);
+    parallelFor(n, [&](std::size_t a) {
+        Tensor<Dim> G = Tensor<Dim>::Zero();
+        Vector<Dim> T = Vector<Dim>::Zero();
+        Vector<Dim> Lp = Vector<Dim>::Zero();
+        double LJ = 0;
+        const Vector<Dim> pa = rho0[a] * v[a];
+        for (std::size_t k = offsets[a]; k < offsets[a + 1]; ++k) {
+            const std::size_t b = rows.indices()[k];
+            const double Vb = V_[b];
+            G += Vb * (v[b] - v[a]) * g[k].transpose();
+            T += Vb * (P[b] * gAtNeighbour[k] - P[a] * g[k]);
+            if (lapMomentum) Lp += Vb * lap[k] * (rho0[b] * v[b] - pa);
+            if (lapJacobian) LJ += Vb * lap[k] * (J[b] - J[a]);
+        }
+        force[a] = -T;
+        if (formulation_->evolvesF()) dFdt_[a] = G;
+        if (H_ || J_) {
+            const Tensor<3> G3 = embed<Dim>(G, 0.0);
+            if (H_) dHdt_[a] = inPlane<Dim>(tensorCross(embed<Dim>((*F_)[a], 1.0), G3));
+            if (J_) dJdt_[a] = cofactor3(a).cwiseProduct(G3).sum();
+        }
+        if (lapMomentum) lapP_[a] = Lp;
+        if (lapJacobian) lapJ_[a] = LJ;
+    });
+    pairInteractions_ += double(offsets[n]);
+    rateSeconds_ += watch.seconds();
+
+    // Dissipation: D(U) = (eps2 c h [+ mu_vis/rho0]) L[U] - eps4 c h^3 L^2[U].
+    watch.restart();
+    const double c = cpMax_, h = spacing_;
+    std::vector<Vector<Dim>> dissipationP;
+    std::vector<double> dissipationJ;
+    if (!lap2P_.empty() || !lap2J_.empty()) {
+        const Vector<Dim>* Lp = lap2P_.empty() ? nullptr : withGhosts(lapP_, lapPAll_, GhostMap::vector);
+        const double* LJ = lap2J_.empty() ? nullptr : withGhosts(lapJ_, lapJAll_, GhostMap::vector);
+        parallelFor(n, [&](std::size_t a) {
+            Vector<Dim> L2p = Vector<Dim>::Zero();
+            double L2J = 0;
+            for (std::size_t k = offsets[a]; k < offsets[a + 1]; ++k) {
+                const std::size_t b = rows.indices()[k];
+                if (Lp) L2p += V_[b] * lap[k] * (Lp[b] - Lp[a]);
+                if (LJ) L2J += V_[b] * lap[k] * (LJ[b] - LJ[a]);
+            }
+            if (!lap2P_.empty()) lap2P_[a] = L2p;
+            if (!lap2J_.empty()) lap2J_[a] = L2J;
+        });
+    }
+    if (!lapP_.empty()) {
+        dissipationP.resize(n);
+        parallelFor(n, [&](std::size_t a) {
+            Vector<Dim> d = (dissipation_.momentum2 * c * h + dissipation_.viscosity / rho0_[a]) * lapP_[a];
+            if (!lap2P_.empty()) d -= dissipation_.momentum4 * c * h * h * h * lap2P_[a];
+            dissipationP[a] = d;
+        });
+    }
+    if (!lapJ_.empty()) {
+        dissipationJ.resize(n);
+        parallelFor(n, [&](std::size_t a) {
+            double d = dissipation_.jacobian2 * c * h * lapJ_[a];
+            if (!lap2J_.empty()) d -= dissipation_.jacobian4 * c * h * h * h * lap2J_[a];
+            dissipationJ[a] = d;
+        });
+    }
+    dissipationSeconds_ += watch.seconds();
+
+    // Conservation projections (linear in the force: projecting the sum is the sum of the
+    // projections, so one solve serves both when both are on).
+    watch.restart();
+    if (!dissipationP.empty()) {
+        if (projectMomentum_ == projectDissipation_) {
+            parallelFor(n, [&](std::size_t a) { force[a] += dissipationP[a]; });
+            if (projectMomentum_) MomentumProjection<Dim>::momentum(force, V_, xTilde);
+        } else {
+            if (projectMomentum_) MomentumProjection<Dim>::momentum(force, V_, xTilde);
+            if (projectDissipation_) MomentumProjection<Dim>::momentum(dissipationP, V_, xTilde);
+            parallelFor(n, [&](std::size_t a) { force[a] += dissipationP[a]; });
+        }
+    } else if (projectMomentum_) {
+        MomentumProjection<Dim>::momentum(force, V_, xTilde);
+    }
+    if (!dissipationJ.empty()) {
+        if (projectJacobian_) MomentumProjection<Dim>::mean(dissipationJ, V_);
+        parallelFor(n, [&](std::size_t a) { dJdt_[a] += dissipationJ[a]; });
+    }
+    projectionSeconds_ += watch.seconds();
+
+    // External forces, then the essential boundary conditions on the rate.
+    if (!boundaries_.empty()) {
+        boundaryForce_.assign(n, Vector<Dim>::Zero());
+        boundaries_.addBoundaryForces(*particles_, boundaryForce_, t);
+    }
+    parallelFor(n, [&](std::size_t a) {
+        Vector<Dim> f = force[a] + rho0_[a] * gravity_;
+        if (!boundaryForce_.empty()) f += boundaryForce_[a] / V_[a];
+        acceleration_[a] = f / rho0_[a];
+    });
+    if (!boundaries_.empty()) boundaries_.constrainAcceleration(*particles_, acceleration_, t);
+}
+
+template <int Dim>
+TimeStepVote TlSphSolver<Dim>::stableTimeStep() {
+    return {alphaCFL_ * spacing_ / cpMax_, "CFL (alphaCFL h / c_p)"};
+}
+
+template <int Dim>
+void TlSphSolver<Dim>::step(double dt) {
+    const std::size_t n = x_.size();
+    const double t = time().value();
+    x0_ = x_, v0_ = v_;
+    if (formulation_->evolvesF()) F0_ = *F_;
+    if (H_) H0_ = *H_;
+    if (J_) J0_ = *J_;
+    const bool evolveF = formulation_->evolvesF();
+
+    // Stage 1: U* = U^n + dt U'(U^n), moments about x~ = x^n.
+    computeRates(x0_, t);
+    Stopwatch watch;
+    parallelFor(n, [&](std::size_t i) {
+        x_[i] = x0_[i] + dt * v0_[i];
+        v_[i] = v0_[i] + dt * acceleration_[i];
+        if (evolveF) (*F_)[i] += dt * dFdt_[i];
+        if (H_) (*H_)[i] += dt * dHdt_[i];
+        if (J_) (*J_)[i] += dt * dJdt_[i];
+    });
+    if (!boundaries_.empty()) {
+        boundaries_.constrainVelocity(*particles_, v_, t + dt);
+        boundaries_.constrainPosition(*particles_, t + dt);
+    }
+    // x~ = x^n + dt/2 (v^n + v*) = x^{n+1}.
+    std::vector<Vector<Dim>> xTilde(n);
+    parallelFor(n, [&](std::size_t i) { xTilde[i] = x0_[i] + 0.5 * dt * (v0_[i] + v_[i]); });
+    integrateSeconds_ += watch.seconds();
+    checkState("stage 1");
+
+    // Stage 2 and the average: U^{n+1} = (U^n + U* + dt U'(U*)) / 2.
+    computeRates(xTilde, t + dt);
+    watch.restart();
+    parallelFor(n, [&](std::size_t i) {
+        x_[i] = 0.5 * (x0_[i] + x_[i] + dt * v_[i]);
+        v_[i] = 0.5 * (v0_[i] + v_[i] + dt * acceleration_[i]);
+        if (evolveF) (*F_)[i] = 0.5 * (F0_[i] + (*F_)[i] + dt * dFdt_[i]);
+        if (H_) (*H_)[i] = 0.5 * (H0_[i] + (*H_)[i] + dt * dHdt_[i]);
+        if (J_) (*J_)[i] = 0.5 * (J0_[i] + (*J_)[i] + dt * dJdt_[i]);
+    });
+    if (!boundaries_.empty()) {
+        boundaries_.constrainVelocity(*particles_, v_, t + dt);
+        boundaries_.constrainPosition(*particles_, t + dt);
+    }
+    integrateSeconds_ += watch.seconds();
+    // P^{n+1} for the output and the plastic state that goes with it.
+    if (formulation_->displacementBased()) computeDisplacementGradient();
+    computeStress(true);
+    checkState("step");
+}
+
+template <int Dim>
+void TlSphSolver<Dim>::checkState(const char* phase) const {
+    const std::size_t n = x_.size();
+    auto jacobian = [&](std::size_t i) { return J_ ? (*J_)[i] : (*F_)[i].determinant(); };
+    auto bad = [&](std::size_t i) {
+        return !x_[i].allFinite() || !v_[i].allFinite() || !(*F_)[i].allFinite() || !(jacobian(i) > 0) ||
+               !(*P_)[i].allFinite();
+    };
+    const double count = Reduce::sum<double>(n, [&](std::size_t i) { return bad(i) ? 1.0 : 0.0; });
+    if (count == 0) return;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!bad(i)) continue;
+        std::ostringstream s;
+        s.precision(6);
+        s << "phase " << phase << ", step " << time().timeIndex() + 1 << ", t = " << time().value()
+          << ": particle " << particles_->globalId()[i] << " (reference position " << (*X_)[i].transpose()
+          << ", material " << lawNames_[(*material_)[i]] << ") has J = " << jacobian(i)
+          << ", |v| = " << v_[i].norm() << ", |F| = " << (*F_)[i].norm() << "; " << count
+          << " particles affected.\n    ";
+        if (!(jacobian(i) > 0) && std::isfinite(jacobian(i)))
+            s << "The deformation has inverted the particle (J <= 0): hourglass modes or a too coarse "
+                 "discretisation of a large local deformation. Raise the momentum eps4 of the JST "
+                 "dissipation, use formulation pFJ near incompressibility, or reduce alphaCFL.";
+        else
+            s << "The state is no longer finite: the step is unstable (alphaCFL " << alphaCFL_
+              << "; JST eps4 must exceed alphaCFL^3/8), or a boundary condition drives the body "
+                 "faster than the material can carry.";
+        throw RunError(s.str());
+    }
+}
+
+template <int Dim>
+std::optional<double> TlSphSolver<Dim>::internalEnergy() const {
+    const std::size_t n = x_.size();
+    std::vector<double> w(n, 0.0);
+    parallelFor(n, [&](std::size_t i) {
+        const Tensor<3> F3 = embed<Dim>((*F_)[i], 1.0);
+        const Tensor<3> H3 = cofactor3(i);
+        const double J = J_ ? (*J_)[i] : F3.determinant();
+        Tensor<3> P3;
+        SymmTensor<3> cp;
+        double epsP = 0;
+        ConstitutiveLaw::Fields f;
+        f.size = 1, f.F = &F3, f.H = &H3, f.J = &J, f.P = &P3, f.energyDensity = &w[i];
+        const auto& law = *laws_[(*material_)[i]];
+        if (law.usesPlasticState()) {
+            cp = SymmTensor<3>::fromFull(embed<Dim>((*plasticDeformation_)[i].full(),
+                                                    plasticOutOfPlane_ ? (*plasticOutOfPlane_)[i] : 1.0));
+            epsP = (*plasticStrain_)[i];
+            f.plasticState = &cp, f.plasticStrain = &epsP;
+        }
+        law.stress(f, false);
+    });
+    return Reduce::sum<double>(n, [&](std::size_t i) { return m_[i] / rho0_[i] * w[i]; });
+}
+
+template <int Dim>
+double TlSphSolver<Dim>::pressureOscillation() const {
+    std::vector<double> all;
+    withGhosts(*pressure_, all, GhostMap::vector);
+    const auto lap = operators_->laplacianOf(ghostSource_.empty() ? *pressure_ : all);
+    const std::size_t n = x_.size();
+    const double num =
+        Reduce::sum<double>(n, [&](std::size_t i) { return V_[i] * std::abs(lap[i]) * spacing_ * spacing_; });
+    const double den =
+        Reduce::sum<double>(n, [&](std::size_t i) { return V_[i] * std::abs((*pressure_)[i]); });
+    return den > 0 ? num / den : 0.0;
+}
+
+template <int Dim>
+double TlSphSolver<Dim>::compatibilityError() const {
+    std::vector<Vector<Dim>> u(x_.size());
+    for (std::size_t i = 0; i < u.size(); ++i) u[i] = x_[i] - (*X_)[i];
+    std::vector<Vector<Dim>> all;
+    withGhosts(u, all, GhostMap::vector);
+    const auto grad = operators_->gradientOf(ghostSource_.empty() ? u : all);
+    return Reduce::max(u.size(), [&](std::size_t i) {
+        return ((*F_)[i] - Tensor<Dim>::Identity() - grad[i]).norm() / std::max(1.0, (*F_)[i].norm());
+    });
+}
+
+template <int Dim>
+std::vector<std::pair<std::string, double>> TlSphSolver<Dim>::phaseTimes() const {
+    return {{"computeStress", stressSeconds_},
+            {"computeRates", rateSeconds_},
+            {"dissipation", dissipationSeconds_},
+            {"projections", projectionSeconds_},
+            {"integrate", integrateSeconds_}};
+}
+
+template <int Dim>
+std::vector<std::string> TlSphSolver<Dim>::summary(double loopSeconds) const {
+    std::vector<std::string> lines;
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "pair interactions/s  %.4g (%.1f neighbours per particle, 2 stages a step)",
+                  loopSeconds > 0 ? pairInteractions_ / loopSeconds : 0.0,
+                  x_.empty() ? 0.0 : double(operators_->neighbours().pairCount()) / double(x_.size()));
+    lines.push_back(line);
+    std::snprintf(line, sizeof line, "pressure oscillation  %.6g (sum V |L[p]| h^2 / sum V |p|)",
+                  pressureOscillation());
+    lines.push_back(line);
+    if (formulation_->evolvesF()) {
+        std::snprintf(line, sizeof line,
+                      "compatibility        %.3e (max |F - I - grad~(x - X)| / max(1, |F|))",
+                      compatibilityError());
+        lines.push_back(line);
+    }
+    return lines;
+}
+
+template class TlSphSolver<1>;
+template class TlSphSolver<2>;
+template class TlSphSolver<3>;
+
+}  // namespace mfdyn

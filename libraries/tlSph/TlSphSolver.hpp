@@ -1,0 +1,153 @@
+#pragma once
+// tlSph: total-Lagrangian mixed {p, F, H, J} SPH with JST stabilisation for large-strain solid
+// dynamics (Lee, Gil, Greto, Kulasegaram, Bonet 2016; the method as implemented is
+// ../shared/methods/tl-jst-sph.md). Every operator lives on the reference configuration X and
+// its neighbours are found once (meshfreeOperators/ReferenceOperators.hpp). A step is the
+// two-stage TVD Runge-Kutta of Algorithm 1, each stage in named phases:
+//
+//     computeStress (P from F, H, J) -> computeRates (G, T, L[p], L[J]) -> dissipation (L^2)
+//     -> projections (momentum of T and D(p), mean of D(J)) -> boundary conditions -> update
+//
+// constant/tlSphProperties:
+//     formulation { type pFJ; }                  // pF | pFJ | pFHJ | displacement
+//     kernel      { type wendlandC2; }           // any registered kernel (support 2h)
+//     smoothingLengthRatio 1.3;                  // h = ratio x spacing (default 1.3)
+//     spacing     0.05;                          // optional: particle spacing (default: largest V^(1/d))
+//     gradient    corrected;                     // corrected | uncorrected | correctedKernel
+//     dissipation { type jst; momentum (0 0.125); jacobian (0 0); }   // tlDissipation family
+//     projection  { momentum yes; dissipation yes; jacobian yes; }    // the conservation projections
+//     alphaCFL    0.3;                           // dt = alphaCFL h_min / c_p,max
+//     gravity     (0 0 0);                       // body force per unit mass (optional)
+//     initialState { type swingingCube; amplitude 5e-4; }   // optional, applied at a fresh start
+//
+// constant/materialProperties: materials { name { rho0 ..; youngsModulus ..; poissonRatio ..;
+//                                                 constitutiveLaw { type neoHookean; } } }
+// constant/boundaryConditions (optional; libraries/boundaryConditions): fixed (clamped),
+// symmetryPlane (roller), skewSymmetricPlane, prescribedVelocity (with releaseTime),
+// prescribedTraction, free - imposed directly on the particles' momentum and its rate.
+//
+// Fields: position x, referencePosition X, velocity v (p = rho0 v), mass, density (rho0, never
+// changed: V = m / rho0), material, smoothingLength (uniform, for sampling), deformationGradient F,
+// firstPiolaStress P, pressure; jacobian J only when the formulation evolves it, cofactor H only for pFHJ;
+// plasticDeformation, plasticStrain only when a material's law has plastic state. Dim < 3 is plane strain
+// (2D) or uniaxial strain (1D): the laws see F embedded in 3x3 with unit out-of-plane stretch.
+#include "boundaryConditions/BoundaryConditionList.hpp"
+#include "kernels/Kernel.hpp"
+#include "materials/constitutive/ConstitutiveLaw.hpp"
+#include "meshfreeOperators/ReferenceOperators.hpp"
+#include "solver/Solver.hpp"
+#include "tlSph/Formulation.hpp"
+#include "tlSph/TlDissipation.hpp"
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace mfdyn {
+
+template <int Dim>
+class TlSphSolver final : public Solver {
+public:
+    explicit TlSphSolver(SolverRun& run);
+    ~TlSphSolver() override;
+
+    TimeStepVote stableTimeStep() override;
+    void step(double dt) override;
+    ParticleSetBase& particles() override { return *particles_; }
+    std::optional<double> internalEnergy() const override;
+    std::vector<const Dictionary*> dictionaries() const override {
+        std::vector<const Dictionary*> d{&properties_, &materialProperties_};
+        if (boundaryDict_) d.push_back(&*boundaryDict_);
+        return d;
+    }
+    std::vector<std::pair<std::string, double>> phaseTimes() const override;
+    std::vector<std::string> summary(double loopSeconds) const override;
+
+    // Sigma V |L[p]| h^2 / Sigma V |p| over the particles (p the pressure): the pressure
+    // oscillation measure of the near-incompressible cases (checkerboarding raises it).
+    double pressureOscillation() const;
+    // max_a |F_a - I - grad~(x - X)_a| / max(1, |F|): how far the evolved F is from the discrete
+    // gradient of the positions (round-off for pF without boundary conditions).
+    double compatibilityError() const;
+
+private:
+    void readMaterials();
+    void initialiseFields(SolverRun& run);
+    void makeMirrorGhosts();
+    // How a quantity maps to a mirror ghost: vector s Q a (scalars s a), tensor s Q A Q^T,
+    // deformation I + s Q (A - I) Q^T (scalars 1 + s (J - 1)), copy.
+    enum class GhostMap { vector, tensor, deformation, copy };
+    // The array `real` followed by its values at the mirror ghosts: `all` when there are ghosts,
+    // else `real` itself.
+    template <class T>
+    const T* withGhosts(const std::vector<T>& real, std::vector<T>& all, GhostMap kind) const;
+    void computeStress(bool updateState);
+    void computeDisplacementGradient();
+    void computeRates(const std::vector<Vector<Dim>>& xTilde, double t);
+    void checkState(const char* phase) const;
+    Tensor<3> cofactor3(std::size_t i) const;
+
+    std::unique_ptr<ParticleSet<Dim>> owner_;
+    ParticleSet<Dim>* particles_;
+    Dictionary properties_;
+    Dictionary materialProperties_;
+    std::optional<Dictionary> boundaryDict_;
+    std::unique_ptr<Kernel> kernel_;
+    std::unique_ptr<Formulation> formulation_;
+    std::unique_ptr<TlDissipation> dissipationModel_;
+    TlDissipationCoefficients dissipation_;
+    std::vector<std::unique_ptr<ConstitutiveLaw>> laws_;
+    std::vector<std::string> lawNames_;
+    std::unique_ptr<ReferenceOperators<Dim>> operators_;
+    BoundaryConditionList<Dim> boundaries_;
+    bool projectMomentum_ = true, projectDissipation_ = true, projectJacobian_ = true;
+    double alphaCFL_ = 0.3;
+    double spacing_ = 0, h_ = 0, cpMax_ = 0;
+    Vector<Dim> gravity_ = Vector<Dim>::Zero();
+    bool plastic_ = false;
+
+    std::vector<Vector<Dim>>& x_;
+    std::vector<Vector<Dim>>& v_;
+    std::vector<double>& m_;
+    std::vector<double>& rho0_;
+    std::vector<Vector<Dim>>* X_ = nullptr;
+    std::vector<Tensor<Dim>>* F_ = nullptr;
+    std::vector<Tensor<Dim>>* H_ = nullptr;
+    std::vector<double>* J_ = nullptr;
+    std::vector<Tensor<Dim>>* P_ = nullptr;
+    std::vector<double>* pressure_ = nullptr;
+    std::vector<std::int64_t>* material_ = nullptr;
+    std::vector<SymmTensor<Dim>>* plasticDeformation_ = nullptr;
+    std::vector<double>* plasticOutOfPlane_ = nullptr;
+    std::vector<double>* plasticStrain_ = nullptr;
+
+    // Mirror ghosts of symmetryPlane (parity +1) and skewSymmetricPlane (parity -1) conditions,
+    // made once in the reference configuration: ghost g images real particle ghostSource_[g]
+    // through the reflections ghostMap_[g] (Q); a vector maps to s Q a, a tensor to s Q A Q^T.
+    std::vector<Vector<Dim>> ghostPosition_;
+    std::vector<std::size_t> ghostSource_;
+    std::vector<Tensor<Dim>> ghostMap_;
+    std::vector<double> ghostParity_;
+    std::vector<Vector<Dim>> vAll_, lapPAll_;
+    std::vector<Tensor<Dim>> PAll_;
+    std::vector<double> JAll_, rho0All_, lapJAll_;
+
+    // Scratch: volumes, the rates of a stage, Laplacians, the state at the start of a step.
+    std::vector<double> V_;
+    std::vector<Vector<Dim>> acceleration_, lapP_, lap2P_, boundaryForce_;
+    std::vector<Tensor<Dim>> dFdt_, dHdt_;
+    std::vector<double> dJdt_, lapJ_, lap2J_;
+    std::vector<Vector<Dim>> x0_, v0_;
+    std::vector<Tensor<Dim>> F0_, H0_;
+    std::vector<double> J0_;
+
+    double pairInteractions_ = 0;
+    double stressSeconds_ = 0, rateSeconds_ = 0, dissipationSeconds_ = 0, projectionSeconds_ = 0,
+           integrateSeconds_ = 0;
+};
+
+extern template class TlSphSolver<1>;
+extern template class TlSphSolver<2>;
+extern template class TlSphSolver<3>;
+
+}  // namespace mfdyn
