@@ -20,6 +20,7 @@ InitialState<Dim>::InitialState(const Dictionary& dict) : dict_(dict) {
         if (regions_.empty()) throw dict.error("regions", "the list of regions is empty");
     }
     dict.getOrDefault<std::string>("type", "");  // read by the selector
+    if (const Dictionary* shapeDict = dict.findDict("shape")) shape_ = Shape::New(*shapeDict, Dim);
 }
 
 template <int Dim>
@@ -64,10 +65,8 @@ void InitialState<Dim>::apply(ParticleSet<Dim>& particles, const std::vector<Vec
     }
 
     // `shape { ... }` narrows the selection to the particles whose reference position is inside.
-    if (const Dictionary* shapeDict = dict_.findDict("shape")) {
-        const auto shape = Shape::New(*shapeDict, Dim);
-        for (std::size_t i = 0; i < n; ++i) selected[i] = selected[i] && shape->inside(X[i].data());
-    }
+    if (shape_)
+        for (std::size_t i = 0; i < n; ++i) selected[i] = selected[i] && shape_->inside(X[i].data());
 
     auto& x = particles.position();
     auto& v = particles.vectorField("velocity");

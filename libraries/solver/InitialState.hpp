@@ -18,6 +18,7 @@
 // hasDisplacement()), v(X) and grad u(X) = du_i/dX_J; apply() writes them to the particles.
 #include "core/Registry.hpp"
 #include "core/Tensor.hpp"
+#include "geometry/Shape.hpp"
 #include "particles/ParticleSet.hpp"
 
 #include <memory>
@@ -58,6 +59,7 @@ protected:
 
 private:
     Dictionary dict_;  // for the location of errors found in apply()
+    std::shared_ptr<const Shape> shape_;  // `shape`: only reference positions inside it
     std::vector<std::string> regions_;
 };
 
