@@ -29,6 +29,7 @@
 #include "solver/InitialState.hpp"
 #include "solver/MaterialAssignment.hpp"
 #include "solver/SolverRun.hpp"
+#include "tlSph/LagrangeMultiplierProjection.hpp"
 #include "tlSph/MomentumProjection.hpp"
 
 #include <Eigen/Dense>
@@ -203,10 +204,31 @@ void TlSphSolver<Dim>::initialiseFields(SolverRun& run) {
     options.gradient = properties_.found("gradient") ? gradientCorrectionFromName(properties_, "gradient")
                                                      : GradientCorrection::corrected;
     options.laplacian = true;
+    const std::string essential =
+        properties_.getOrDefault<std::string>("essentialBoundaryConditions", "direct");
+    if (essential != "direct" && essential != "lagrangeMultiplier")
+        throw properties_.error(
+            "essentialBoundaryConditions",
+            "'" + essential + "' is not valid; valid choices: direct | lagrangeMultiplier");
+    const bool lagrangeMultiplier = essential == "lagrangeMultiplier" && !boundaries_.empty();
+    if (lagrangeMultiplier && !ghostSource_.empty())
+        throw properties_.error(
+            "essentialBoundaryConditions",
+            "lagrangeMultiplier needs `mirrorGhosts no;`: across a mirrored plane the constraint "
+            "holds by symmetry, and the projection interpolates over the real particles only");
+    options.correctedKernel = lagrangeMultiplier;
     Stopwatch watch;
     std::vector<Vector<Dim>> Xall(*X_);
     Xall.insert(Xall.end(), ghostPosition_.begin(), ghostPosition_.end());
     operators_ = std::make_unique<ReferenceOperators<Dim>>(Xall, V_, h_, *kernel_, options);
+    if (lagrangeMultiplier) {
+        essentialTime_ = time().value();
+        essential_ = std::make_unique<LagrangeMultiplierProjection<Dim>>(
+            *operators_, V_, constraintsFrom(boundaries_, *particles_, essentialTime_), n);
+        Log::info(
+            "Essential boundary conditions by the Lagrange-multiplier projection (Lee et al. 2016 App. B): " +
+            std::to_string(essential_->size()) + " constrained particles");
+    }
     for (const auto& law : laws_) cpMax_ = std::max(cpMax_, law->pWaveSpeed());
 
     // P and the pressure of the initial state, for the first write and the function objects.
@@ -513,6 +535,21 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
         acceleration_[a] = f / rho0_[a];
     });
     if (!boundaries_.empty()) boundaries_.constrainAcceleration(*particles_, acceleration_, t);
+    if (essential_) {
+        // The set of constraints changes when a condition is released: build the projection again.
+        bool changed = false;
+        for (std::size_t k = 0; k < boundaries_.size(); ++k)
+            changed = changed || (boundaries_[k].active(essentialTime_) != boundaries_[k].active(t));
+        if (changed) {
+            essentialTime_ = t;
+            essential_ = std::make_unique<LagrangeMultiplierProjection<Dim>>(
+                *operators_, V_, constraintsFrom(boundaries_, *particles_, t), n);
+        }
+        std::vector<Vector<Dim>> rate(n);
+        parallelFor(n, [&](std::size_t a) { rate[a] = rho0_[a] * acceleration_[a]; });
+        essential_->project(rate, prescribedRates(boundaries_, essential_->constraints(), rho0_, t));
+        parallelFor(n, [&](std::size_t a) { acceleration_[a] = rate[a] / rho0_[a]; });
+    }
 }
 
 template <int Dim>

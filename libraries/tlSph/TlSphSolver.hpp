@@ -18,6 +18,8 @@
 //     projection  { momentum yes; dissipation yes; jacobian yes; }    // the conservation projections
 //     alphaCFL    0.3;                           // dt = alphaCFL h_min / c_p,max
 //     gravity     (0 0 0);                       // body force per unit mass (optional)
+//     mirrorGhosts yes;                          // mirror the body across symmetry/skew planes
+//     essentialBoundaryConditions direct;        // or lagrangeMultiplier (App. B; mirrorGhosts no)
 //     initialState { type swingingCube; amplitude 5e-4; }   // optional, applied at a fresh start
 //
 // constant/materialProperties: materials { name { rho0 ..; youngsModulus ..; poissonRatio ..;
@@ -37,6 +39,7 @@
 #include "meshfreeOperators/ReferenceOperators.hpp"
 #include "solver/Solver.hpp"
 #include "tlSph/Formulation.hpp"
+#include "tlSph/LagrangeMultiplierProjection.hpp"
 #include "tlSph/TlDissipation.hpp"
 
 #include <memory>
@@ -100,6 +103,10 @@ private:
     std::vector<std::string> lawNames_;
     std::unique_ptr<ReferenceOperators<Dim>> operators_;
     BoundaryConditionList<Dim> boundaries_;
+    // `essentialBoundaryConditions lagrangeMultiplier`: step 9 of Algorithm 1, built for the
+    // conditions active at essentialTime_.
+    std::unique_ptr<LagrangeMultiplierProjection<Dim>> essential_;
+    double essentialTime_ = 0;
     bool projectMomentum_ = true, projectDissipation_ = true, projectJacobian_ = true;
     double alphaCFL_ = 0.3;
     double spacing_ = 0, h_ = 0, cpMax_ = 0;
