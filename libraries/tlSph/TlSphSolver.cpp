@@ -561,6 +561,10 @@ template <int Dim>
 void TlSphSolver<Dim>::step(double dt) {
     const std::size_t n = x_.size();
     const double t = time().value();
+    // The end of the step as seen by the boundary conditions: its left limit, so that a condition
+    // released at t + dt (a releaseTime the time control lands on) still acts over the whole
+    // step, as it does for the exact solution, instead of half of it in the trapezoidal stage 2.
+    const double tEnd = std::nextafter(t + dt, t);
     x0_ = x_, v0_ = v_;
     if (formulation_->evolvesF()) F0_ = *F_;
     if (H_) H0_ = *H_;
@@ -578,8 +582,8 @@ void TlSphSolver<Dim>::step(double dt) {
         if (J_) (*J_)[i] += dt * dJdt_[i];
     });
     if (!boundaries_.empty()) {
-        boundaries_.constrainVelocity(*particles_, v_, t + dt);
-        boundaries_.constrainPosition(*particles_, t + dt);
+        boundaries_.constrainVelocity(*particles_, v_, tEnd);
+        boundaries_.constrainPosition(*particles_, tEnd);
     }
     // x~ = x^n + dt/2 (v^n + v*) = x^{n+1}.
     std::vector<Vector<Dim>> xTilde(n);
@@ -588,7 +592,7 @@ void TlSphSolver<Dim>::step(double dt) {
     checkState("stage 1");
 
     // Stage 2 and the average: U^{n+1} = (U^n + U* + dt U'(U*)) / 2.
-    computeRates(xTilde, t + dt);
+    computeRates(xTilde, tEnd);
     watch.restart();
     parallelFor(n, [&](std::size_t i) {
         x_[i] = 0.5 * (x0_[i] + x_[i] + dt * v_[i]);
@@ -598,8 +602,8 @@ void TlSphSolver<Dim>::step(double dt) {
         if (J_) (*J_)[i] = 0.5 * (J0_[i] + (*J_)[i] + dt * dJdt_[i]);
     });
     if (!boundaries_.empty()) {
-        boundaries_.constrainVelocity(*particles_, v_, t + dt);
-        boundaries_.constrainPosition(*particles_, t + dt);
+        boundaries_.constrainVelocity(*particles_, v_, tEnd);
+        boundaries_.constrainPosition(*particles_, tEnd);
     }
     integrateSeconds_ += watch.seconds();
     // P^{n+1} for the output and the plastic state that goes with it.
