@@ -248,7 +248,7 @@ void TlSphSolver<Dim>::initialiseFields(SolverRun& run) {
     std::ostringstream s;
     s << "tlSph: formulation " << formulation_->name() << ", kernel " << kernel_->type() << ", spacing "
       << spacing_ << ", h " << h_ << ", "
-      << operators_->neighbours().pairCount() / std::max<std::size_t>(1, n)
+      << operators_->neighbours().offsets()[n] / std::max<std::size_t>(1, n)
       << " neighbours per particle (reference configuration, " << watch.seconds() << " s), c_p,max " << cpMax_
       << " m/s, dissipation " << dissipationModel_->describe() << ", projections: momentum "
       << (projectMomentum_ ? "yes" : "no") << ", dissipation " << (projectDissipation_ ? "yes" : "no")
@@ -709,7 +709,7 @@ std::vector<std::string> TlSphSolver<Dim>::summary(double loopSeconds) const {
     std::snprintf(line, sizeof line,
                   "pair interactions/s  %.4g (%.1f neighbours per particle, 2 stages a step)",
                   loopSeconds > 0 ? pairInteractions_ / loopSeconds : 0.0,
-                  x_.empty() ? 0.0 : double(operators_->neighbours().pairCount()) / double(x_.size()));
+                  x_.empty() ? 0.0 : double(operators_->neighbours().offsets()[x_.size()]) / double(x_.size()));
     lines.push_back(line);
     std::snprintf(line, sizeof line, "pressure oscillation  %.6g (sum V |L[p]| h^2 / sum V |p|)",
                   pressureOscillation());
