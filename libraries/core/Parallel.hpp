@@ -25,6 +25,15 @@ void parallelFor(std::size_t n, Body&& body) {
     for (std::size_t i = 0; i < n; ++i) body(i);
 }
 
+// For loops whose items are heavy (a gather over ~50 neighbours each): `work` is the cost of the
+// whole loop in item-equivalents of a light loop (e.g. the pair count), compared with the same
+// threshold.
+template <class Body>
+void parallelForWork(std::size_t n, std::size_t work, Body&& body) {
+#pragma omp parallel for schedule(static) if (work >= parallelThreshold && n > 1)
+    for (std::size_t i = 0; i < n; ++i) body(i);
+}
+
 struct Reduce {
     static constexpr std::size_t blockSize = 4096;
 

@@ -273,7 +273,7 @@ Tensor<3> TlSphSolver<Dim>::cofactor3(std::size_t i) const {
 template <int Dim>
 void TlSphSolver<Dim>::computeStress(bool updateState) {
     Stopwatch watch;
-    parallelFor(x_.size(), [&](std::size_t i) {
+    parallelForWork(x_.size(), 32 * x_.size(), [&](std::size_t i) {
         const Tensor<3> F3 = embed<Dim>((*F_)[i], 1.0);
         const Tensor<3> H3 = cofactor3(i);
         const double J = J_ ? (*J_)[i] : F3.determinant();
@@ -412,7 +412,7 @@ void TlSphSolver<Dim>::computeDisplacementGradient() {
     for (std::size_t i = 0; i < x_.size(); ++i) uReal[i] = x_[i] - (*X_)[i];
     const Vector<Dim>* u = withGhosts(uReal, uAll, GhostMap::vector);
     auto& F = *F_;
-    parallelFor(x_.size(), [&](std::size_t a) {
+    parallelForWork(x_.size(), offsets[x_.size()], [&](std::size_t a) {
         Tensor<Dim> grad = Tensor<Dim>::Zero();
         for (std::size_t k = offsets[a]; k < offsets[a + 1]; ++k)
             grad += V_[rows.indices()[k]] * (u[rows.indices()[k]] - u[a]) * g[k].transpose();
@@ -438,7 +438,7 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
     const double* rho0 = withGhosts(rho0_, rho0All_, GhostMap::copy);
     const bool lapMomentum = !lapP_.empty(), lapJacobian = !lapJ_.empty();
     std::vector<Vector<Dim>> force(n);
-    parallelFor(n, [&](std::size_t a) {
+    parallelForWork(n, offsets[n], [&](std::size_t a) {
         Tensor<Dim> G = Tensor<Dim>::Zero();
         Vector<Dim> T = Vector<Dim>::Zero();
         Vector<Dim> Lp = Vector<Dim>::Zero();
@@ -473,7 +473,7 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
     if (!lap2P_.empty() || !lap2J_.empty()) {
         const Vector<Dim>* Lp = lap2P_.empty() ? nullptr : withGhosts(lapP_, lapPAll_, GhostMap::vector);
         const double* LJ = lap2J_.empty() ? nullptr : withGhosts(lapJ_, lapJAll_, GhostMap::vector);
-        parallelFor(n, [&](std::size_t a) {
+        parallelForWork(n, offsets[n], [&](std::size_t a) {
             Vector<Dim> L2p = Vector<Dim>::Zero();
             double L2J = 0;
             for (std::size_t k = offsets[a]; k < offsets[a + 1]; ++k) {
