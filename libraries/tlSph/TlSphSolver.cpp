@@ -234,6 +234,7 @@ void TlSphSolver<Dim>::initialiseFields(SolverRun& run) {
     // P and the pressure of the initial state, for the first write and the function objects.
     if (formulation_->displacementBased()) computeDisplacementGradient();
     computeStress(false);
+    stressCurrent_ = true;
 
     acceleration_.assign(n, Vector<Dim>::Zero());
     dFdt_.assign(n, Tensor<Dim>::Zero());
@@ -422,8 +423,13 @@ void TlSphSolver<Dim>::computeDisplacementGradient() {
 
 template <int Dim>
 void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, double t) {
-    if (formulation_->displacementBased()) computeDisplacementGradient();
-    computeStress(false);
+    // P of the state the step starts from was computed at the end of the last step (or at
+    // set-up): the first stage reuses it.
+    if (!stressCurrent_) {
+        if (formulation_->displacementBased()) computeDisplacementGradient();
+        computeStress(false);
+    }
+    stressCurrent_ = false;
     Stopwatch watch;
     const std::size_t n = x_.size();
     const auto& rows = operators_->neighbours();
@@ -609,6 +615,7 @@ void TlSphSolver<Dim>::step(double dt) {
     // P^{n+1} for the output and the plastic state that goes with it.
     if (formulation_->displacementBased()) computeDisplacementGradient();
     computeStress(true);
+    stressCurrent_ = true;
     checkState("step");
 }
 

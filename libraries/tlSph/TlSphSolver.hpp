@@ -148,6 +148,7 @@ private:
     std::vector<Tensor<Dim>> F0_, H0_;
     std::vector<double> J0_;
 
+    bool stressCurrent_ = false;  // P belongs to the present F, H, J (no stage has moved them since)
     double pairInteractions_ = 0;
     double stressSeconds_ = 0, rateSeconds_ = 0, dissipationSeconds_ = 0, projectionSeconds_ = 0,
            integrateSeconds_ = 0;
