@@ -17,6 +17,7 @@
 //     dissipation { type jst; momentum (0 0.125); jacobian (0 0); }   // tlDissipation family
 //     projection  { momentum yes; dissipation yes; jacobian yes; }    // the conservation projections
 //     alphaCFL    0.3;                           // dt = alphaCFL h_min / c_p,max
+//     waveSpeed   current;                       // c_p scaled by the largest stretch of F, H (or reference)
 //     gravity     (0 0 0);                       // body force per unit mass (optional)
 //     mirrorGhosts yes;                          // mirror the body across symmetry/skew planes
 //     essentialBoundaryConditions direct;        // or lagrangeMultiplier (App. B; mirrorGhosts no)
@@ -109,6 +110,7 @@ private:
     double essentialTime_ = 0;
     bool projectMomentum_ = true, projectDissipation_ = true, projectJacobian_ = true;
     double alphaCFL_ = 0.3;
+    bool currentWaveSpeed_ = true;
     double spacing_ = 0, h_ = 0, cpMax_ = 0;
     Vector<Dim> gravity_ = Vector<Dim>::Zero();
     bool plastic_ = false;
