@@ -7,6 +7,7 @@
 // (independent of the number of threads), each block is summed in order, and the block sums
 // are added in block order.
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <limits>
 #include <vector>
@@ -33,6 +34,17 @@ void parallelForWork(std::size_t n, std::size_t work, Body&& body) {
 #pragma omp parallel for schedule(static) if (work >= parallelThreshold && n > 1)
     for (std::size_t i = 0; i < n; ++i) body(i);
 }
+
+// A fixed-size array of sums for Reduce::sum (which value-initialises its type to zero; Eigen
+// vectors are not): Reduce::sum<SumArray<3>>(n, [&](std::size_t i) { SumArray<3> t; ...; return t; }).
+template <int N>
+struct SumArray {
+    std::array<double, N> s{};
+    SumArray& operator+=(const SumArray& o) {
+        for (int k = 0; k < N; ++k) s[k] += o.s[k];
+        return *this;
+    }
+};
 
 struct Reduce {
     static constexpr std::size_t blockSize = 4096;

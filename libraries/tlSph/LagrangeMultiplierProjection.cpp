@@ -60,16 +60,6 @@ namespace mfdyn {
 
 namespace {
 
-// A fixed-size sum that Reduce::sum can value-initialise to zero (Eigen types do not).
-template <int N>
-struct Sums {
-    std::array<double, N> s{};
-    Sums& operator+=(const Sums& o) {
-        for (int k = 0; k < N; ++k) s[k] += o.s[k];
-        return *this;
-    }
-};
-
 // Rigid-body modes: Dim translations and the rotations (none in 1D, 1 in 2D, 3 in 3D).
 template <int Dim>
 constexpr int rigidModes() {
@@ -316,18 +306,18 @@ void LagrangeMultiplierProjection<Dim>::projectConservingMomentum(
     constexpr int k = rigidModes<Dim>();
     using Phi = Eigen::Matrix<double, Dim, k>;
 
-    const auto first = Reduce::sum<Sums<1 + Dim>>(n_, [&](std::size_t a) {
-        Sums<1 + Dim> s;
+    const auto first = Reduce::sum<SumArray<1 + Dim>>(n_, [&](std::size_t a) {
+        SumArray<1 + Dim> s;
         s.s[0] = V_[a];
         for (int d = 0; d < Dim; ++d) s.s[1 + d] = V_[a] * xTilde[a][d];
         return s;
     });
     Vector<Dim> centroid;
     for (int d = 0; d < Dim; ++d) centroid[d] = first.s[1 + d] / first.s[0];
-    const auto gram = Reduce::sum<Sums<k * k>>(n_, [&](std::size_t a) {
+    const auto gram = Reduce::sum<SumArray<k * k>>(n_, [&](std::size_t a) {
         const Phi phi = rigidBasis<Dim>(xTilde[a] - centroid);
         const Eigen::Matrix<double, k, k> g = V_[a] * phi.transpose() * phi;
-        Sums<k * k> s;
+        SumArray<k * k> s;
         for (int p = 0; p < k * k; ++p) s.s[p] = g(p / k, p % k);
         return s;
     });

@@ -8,27 +8,13 @@
 
 namespace mfdyn {
 
-namespace {
-
-// A fixed-size sum that Reduce::sum can value-initialise to zero (Eigen types do not).
-template <int N>
-struct Sums {
-    std::array<double, N> s{};
-    Sums& operator+=(const Sums& o) {
-        for (int k = 0; k < N; ++k) s[k] += o.s[k];
-        return *this;
-    }
-};
-
-}  // namespace
-
 template <int Dim>
 void MomentumProjection<Dim>::momentum(std::vector<Vector<Dim>>& f, const std::vector<double>& volume,
                                        const std::vector<Vector<Dim>>& xTilde, bool angular) {
     const std::size_t n = f.size();
     // Pass 1: sum V, sum V x~, sum V f.
-    const auto first = Reduce::sum<Sums<1 + 2 * Dim>>(n, [&](std::size_t i) {
-        Sums<1 + 2 * Dim> s;
+    const auto first = Reduce::sum<SumArray<1 + 2 * Dim>>(n, [&](std::size_t i) {
+        SumArray<1 + 2 * Dim> s;
         s.s[0] = volume[i];
         for (int d = 0; d < Dim; ++d)
             s.s[1 + d] = volume[i] * xTilde[i][d], s.s[1 + Dim + d] = volume[i] * f[i][d];
@@ -46,9 +32,9 @@ void MomentumProjection<Dim>::momentum(std::vector<Vector<Dim>>& f, const std::v
     }
     if constexpr (Dim == 2) {
         // sum V |x'|^2 and sum V (x' x f)_z.
-        const auto second = Reduce::sum<Sums<2>>(n, [&](std::size_t i) {
+        const auto second = Reduce::sum<SumArray<2>>(n, [&](std::size_t i) {
             const Vector<2> r = xTilde[i] - centroid;
-            Sums<2> s;
+            SumArray<2> s;
             s.s[0] = volume[i] * r.squaredNorm();
             s.s[1] = volume[i] * (r[0] * f[i][1] - r[1] * f[i][0]);
             return s;
@@ -60,11 +46,11 @@ void MomentumProjection<Dim>::momentum(std::vector<Vector<Dim>>& f, const std::v
         });
     } else if constexpr (Dim == 3) {
         // M = sum V (|x'|^2 I - x' x'^T) (symmetric: 6 entries) and b = sum V x' x f.
-        const auto second = Reduce::sum<Sums<9>>(n, [&](std::size_t i) {
+        const auto second = Reduce::sum<SumArray<9>>(n, [&](std::size_t i) {
             const Vector<3> r = xTilde[i] - centroid;
             const Vector<3> m = r.cross(f[i]);
             const double v = volume[i], r2 = r.squaredNorm();
-            Sums<9> s;
+            SumArray<9> s;
             s.s = {v * (r2 - r[0] * r[0]),
                    v * (r2 - r[1] * r[1]),
                    v * (r2 - r[2] * r[2]),
@@ -93,8 +79,8 @@ void MomentumProjection<Dim>::momentum(std::vector<Vector<Dim>>& f, const std::v
 template <int Dim>
 void MomentumProjection<Dim>::mean(std::vector<double>& g, const std::vector<double>& volume) {
     const std::size_t n = g.size();
-    const auto s = Reduce::sum<Sums<2>>(n, [&](std::size_t i) {
-        Sums<2> t;
+    const auto s = Reduce::sum<SumArray<2>>(n, [&](std::size_t i) {
+        SumArray<2> t;
         t.s = {volume[i], volume[i] * g[i]};
         return t;
     });
