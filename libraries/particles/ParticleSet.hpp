@@ -13,6 +13,8 @@
 // and never branches on the dimension again.
 #include "particles/ParticleSetBase.hpp"
 
+#include <memory>
+#include <string>
 #include <type_traits>
 #include <utility>
 
@@ -85,6 +87,26 @@ ParticleSet<Dim>& particleSetCast(ParticleSetBase& base) {
 template <int Dim>
 const ParticleSet<Dim>& particleSetCast(const ParticleSetBase& base) {
     return particleSetCast<Dim>(const_cast<ParticleSetBase&>(base));
+}
+
+// Ownership of a particle set read without its dimension in the type, checked (what a solver
+// does with SolverRun::takeParticles()).
+template <int Dim>
+std::unique_ptr<ParticleSet<Dim>> adoptParticleSet(std::unique_ptr<ParticleSetBase> base) {
+    particleSetCast<Dim>(*base);
+    return std::unique_ptr<ParticleSet<Dim>>(static_cast<ParticleSet<Dim>*>(base.release()));
+}
+
+// A scalar field the particle file must carry: an InputError naming it, what it is for and the
+// fields there are, when it is missing.
+template <int Dim>
+std::vector<double>& requireScalarField(ParticleSet<Dim>& particles, const std::string& name, const std::string& why) {
+    if (!particles.hasField(name)) {
+        std::string have;
+        for (const auto& n : particles.fieldNames()) have += " " + n;
+        throw InputError("the particle file has no field '" + name + "' (" + why + "); fields:" + have);
+    }
+    return particles.scalarField(name);
 }
 
 }  // namespace mfdyn

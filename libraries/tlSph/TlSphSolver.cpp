@@ -44,22 +44,6 @@ namespace mfdyn {
 
 namespace {
 
-template <int Dim>
-std::unique_ptr<ParticleSet<Dim>> adopt(std::unique_ptr<ParticleSetBase> base) {
-    particleSetCast<Dim>(*base);
-    return std::unique_ptr<ParticleSet<Dim>>(static_cast<ParticleSet<Dim>*>(base.release()));
-}
-
-template <int Dim>
-std::vector<double>& requireScalar(ParticleSet<Dim>& p, const std::string& name, const std::string& why) {
-    if (!p.hasField(name)) {
-        std::string have;
-        for (const auto& n : p.fieldNames()) have += " " + n;
-        throw InputError("the particle file has no field '" + name + "' (" + why + "); fields:" + have);
-    }
-    return p.scalarField(name);
-}
-
 // A Dim x Dim tensor in 3x3, the rest of the diagonal `fill`.
 template <int Dim>
 Tensor<3> embed(const Tensor<Dim>& a, double fill) {
@@ -82,7 +66,7 @@ bool readSwitch(const Dictionary* dict, const char* key) {
 template <int Dim>
 TlSphSolver<Dim>::TlSphSolver(SolverRun& run)
     : Solver(run),
-      owner_(adopt<Dim>(run.takeParticles())),
+      owner_(adoptParticleSet<Dim>(run.takeParticles())),
       particles_(owner_.get()),
       properties_(run.runCase().readConstant("tlSphProperties")),
       materialProperties_(run.runCase().readConstant("materialProperties")),
@@ -92,8 +76,8 @@ TlSphSolver<Dim>::TlSphSolver(SolverRun& run)
       dissipation_(dissipationModel_->coefficients()),
       x_(particles_->position()),
       v_(particles_->vectorField("velocity")),
-      m_(requireScalar(*particles_, "mass", "particle masses")),
-      rho0_(requireScalar(*particles_, "density", "the reference density rho0")) {
+      m_(requireScalarField(*particles_, "mass", "particle masses")),
+      rho0_(requireScalarField(*particles_, "density", "the reference density rho0")) {
     const Dictionary* projection = properties_.findDict("projection");
     projectMomentum_ = readSwitch(projection, "momentum");
     projectDissipation_ = readSwitch(projection, "dissipation");
