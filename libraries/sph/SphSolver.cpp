@@ -257,7 +257,8 @@ void SphSolver<Dim>::removeGhosts() {
 template <int Dim>
 void SphSolver<Dim>::updateNeighbours() {
     Stopwatch watch;
-    std::vector<double> radius(x_.size());
+    std::vector<double>& radius = radius_;
+    radius.resize(x_.size());
     for (std::size_t i = 0; i < x_.size(); ++i) radius[i] = kernel_->supportRadius(h_[i]);
     if (!verlet_) {
         std::vector<double> sorted(radius);
@@ -269,6 +270,7 @@ void SphSolver<Dim>::updateNeighbours() {
     if (verlet_->update(x_, radius)) ++rebuilds_;
     ++neighbourUpdates_;
     neighbours_.list = &verlet_->candidates();
+    neighbours_.selected = nullptr, neighbours_.count = nullptr;
     neighbourSeconds_ += watch.seconds();
 }
 
@@ -339,22 +341,95 @@ void SphSolver<Dim>::computeEquationOfState() {
 }
 
 template <int Dim>
+void SphSolver<Dim>::computeKernelFactors() {
+    Stopwatch watch;
+    const std::size_t n = x_.size();
+    invH_.resize(n), wNorm_.resize(n), dhNorm_.resize(n), gradNorm_.resize(n), volume_.resize(n);
+    const KernelEvaluator<Dim> W = W_;
+    parallelFor(n, [&](std::size_t i) {
+        const double h = h_[i], invH = W.invKappa / h;
+        double power = invH;
+        for (int d = 1; d < Dim; ++d) power *= invH;
+        const double c = W.norm * power;
+        invH_[i] = invH;
+        wNorm_[i] = c;
+        dhNorm_[i] = -W.norm * power / h;
+        gradNorm_[i] = c * invH;
+        volume_[i] = m_[i] / rho_[i];
+    });
+    sumSeconds_ += watch.seconds();
+}
+
+// The candidates (support + skin) cut to the pairs within either support, r < max(H_i, H_j),
+// once a step for the three pair loops that follow: about a quarter of the candidates lie in the
+// skin, and a branch on each of them in every loop is mispredicted often. A pair at the edge
+// may be kept by rounding (the test has a margin of 1e-9); it adds exact zeros, as every term
+// carries W or ∇W. Each row is compacted in place of its candidate row, so rows are written
+// independently (any thread count gives the same list).
+template <int Dim>
+void SphSolver<Dim>::selectNeighbours() {
+    Stopwatch watch;
+    const NeighbourList& list = verlet_->candidates();
+    const std::size_t n = nReal_;
+    selected_.resize(list.pairCount());
+    selectedCount_.resize(n);
+    const Vector<Dim>* x = x_.data();
+    const double* invH = invH_.data();
+    const auto& offsets = list.offsets();
+    parallelForWork(n, list.pairCount(), [&](std::size_t i) {
+        const Vector<Dim> xi = x[i];
+        const double invHi = invH[i];
+        NeighbourList::Index* out = selected_.data() + offsets[i];
+        std::size_t found = 0;
+        for (const auto j : list[i]) {
+            const double m = std::min(invHi, invH[j]);
+            out[found] = j;
+            found += (xi - x[j]).squaredNorm() * (m * m) < 1.0 + 1e-9;
+        }
+        selectedCount_[i] = NeighbourList::Index(found);
+    });
+    neighbours_.selected = selected_.data();
+    neighbours_.count = selectedCount_.data();
+    neighbourSeconds_ += watch.seconds();
+}
+
+// Loop A: S_i, ω_i, ñ_i and, when ρ is not summed (so m_j/ρ_j is already this step's), the
+// velocity gradient L_i, from one kernel evaluation per pair within the support of h_i (pairs
+// beyond it add exact zeros to every sum, so they are skipped).
+template <int Dim>
 void SphSolver<Dim>::computeDensitySums() {
     Stopwatch watch;
     const std::size_t n = nReal_;
     scheme_->coefficients(x_.size(), m_.data(), rho_.data(), a_.data(), b_.data(), cc_.data());
     const bool summation = scheme_->summation();
-    if (!summation && !omega_ && !number_) return;
+    gradientWithSums_ = tau_ && !summation;
+    if (!summation && !omega_ && !number_ && !gradientWithSums_) return;
+    const bool gradient = gradientWithSums_;
     std::vector<double> newRho(summation ? n : 0);
-    parallelFor(n, [&](std::size_t i) {
-        const double hi = h_[i];
-        double sum = b_[i] * W_.W(0.0, hi), count = W_.W(0.0, hi), dh = b_[i] * W_.dWdh(0.0, hi);
+    const KernelEvaluator<Dim> W = W_;
+    const Vector<Dim>* x = x_.data();
+    const Vector<Dim>* v = v_.data();
+    const double* b = b_.data();
+    const double* volume = volume_.data();
+    parallelForWork(n, neighbours_.list->pairCount(), [&](std::size_t i) {
+        const double hi = h_[i], invHi = invH_[i], wNormi = wNorm_[i], dhNormi = dhNorm_[i], gradNormi = gradNorm_[i];
+        double w0, dw0;
+        W.shape(0.0, w0, dw0);
+        double sum = b[i] * (wNormi * w0), count = wNormi * w0, dh = b[i] * (dhNormi * (Dim * w0));
+        const Vector<Dim> xi = x[i], vi = v[i];
+        Tensor<Dim> L = Tensor<Dim>::Zero();
         for (const auto j : neighbours_[i]) {
-            const double r = (x_[i] - x_[j]).norm();
-            const double w = W_.W(r, hi);
-            sum += b_[j] * w;
-            count += w;
-            dh += b_[j] * W_.dWdh(r, hi);
+            const Vector<Dim> xij = xi - x[j];
+            const double r = xij.norm();
+            const double u = r * invHi;
+            if (u >= 1.0) continue;
+            double w, dw;
+            W.shape(u, w, dw);
+            const double wij = wNormi * w;
+            sum += b[j] * wij;
+            count += wij;
+            dh += b[j] * (dhNormi * (Dim * w + u * dw));
+            if (gradient && r != 0) L -= (volume[j] * (gradNormi * dw) / r) * (vi - v[j]) * xij.transpose();
         }
         // At a free surface the sum behind ω loses its far half and ω falls towards 0 as the edge
         // thins, which would blow dρ/dt up there; ω is floored (omegaMin). Any per-particle ω
@@ -363,11 +438,13 @@ void SphSolver<Dim>::computeDensitySums() {
         if (omega_) (*omega_)[i] = std::max(omegaMin_, 1.0 + hi / (Dim * sum) * dh);
         if (number_) (*number_)[i] = count;
         if (summation) newRho[i] = cc_[i] * sum;
+        if (gradient) velocityGradient_[i] = L;
     });
     if (summation) {
         std::copy(newRho.begin(), newRho.end(), rho_.begin());
         copyToGhosts(rho_);
         scheme_->coefficients(x_.size(), m_.data(), rho_.data(), a_.data(), b_.data(), cc_.data());
+        parallelFor(x_.size(), [&](std::size_t i) { volume_[i] = m_[i] / rho_[i]; });
     }
     if (omega_) copyToGhosts(*omega_);
     if (number_) copyToGhosts(*number_);
@@ -382,9 +459,7 @@ void SphSolver<Dim>::computeRates() {
     const bool riemann = d.kind == DissipationParameters::Kind::riemann;
     const bool monaghan = d.kind == DissipationParameters::Kind::monaghanGingold;
     const bool differenceForm = differenceForm_;
-    static const std::vector<double> ones;
     auto omega = [&](std::size_t i) { return omega_ ? (*omega_)[i] : 1.0; };
-    auto energy = [&](std::size_t i) { return e_ ? (*e_)[i] : 0.0; };
 
     // Balsara's switch needs ∇·v and ∇×v per particle (SPH estimates with volumes m/ρ).
     std::vector<double> balsara;
@@ -429,58 +504,84 @@ void SphSolver<Dim>::computeRates() {
     }
     const double eta = hLaw_->eta();
 
-    parallelFor(n, [&](std::size_t i) {
-        const double Pi = p_[i], oi = omega(i), hi = h_[i], ci = c_[i], rhoi = rho_[i], ei = energy(i);
-        const double pressureI = a_[i] * Pi / oi;
+    // Per-particle factors of the pair terms, so that the pair loop divides only where the pair
+    // itself is in the denominator.
+    const KernelEvaluator<Dim> W = W_;
+    const Vector<Dim>* x = x_.data();
+    const Vector<Dim>* v = v_.data();
+    const double *m = m_.data(), *rho = rho_.data(), *p = p_.data(), *c = c_.data(), *h = h_.data();
+    const double *a = a_.data(), *b = b_.data(), *invH = invH_.data(), *gradNorm = gradNorm_.data();
+    const double* volume = volume_.data();
+    const double* e = e_ ? e_->data() : nullptr;
+    const SymmTensor<Dim>* tau = tau_ ? tau_->data() : nullptr;
+    // a_j P_j/ω_j of the second pressure term, for every particle (ghosts included).
+    pressureTerm_.resize(x_.size());
+    parallelFor(x_.size(), [&](std::size_t j) { pressureTerm_[j] = a[j] * p[j] / omega(j); });
+    const double* pressureJ = pressureTerm_.data();
+    const bool massFluxOn = d.arho > 0;
+
+    parallelForWork(n, neighbours_.list->pairCount(), [&](std::size_t i) {
+        const double Pi = p[i], oi = omega(i), hi = h[i], ci = c[i], rhoi = rho[i], ei = e ? e[i] : 0.0;
+        const double mi = m[i], bi = b[i], invHi = invH[i], gradNormi = gradNorm[i];
+        const double pressureI = a[i] * Pi / oi;
+        const Vector<Dim> xi = x[i], vi = v[i];
         Vector<Dim> force = Vector<Dim>::Zero();  // m_i dv_i/dt
         // Deviatoric stress terms ride in the same pair loop (r, r̂ and dW/dr computed once).
-        const Tensor<Dim> taui = tau_ ? (*tau_)[i].full() : Tensor<Dim>::Zero();
+        const Tensor<Dim> taui = tau ? tau[i].full() : Tensor<Dim>::Zero();
         Vector<Dim> stressForce = Vector<Dim>::Zero();
         double continuity = 0, massFlux = 0, heating = 0;
         for (const auto j : neighbours_[i]) {
-            const Vector<Dim> xij = x_[i] - x_[j];
+            const Vector<Dim> xij = xi - x[j];
             const double r = xij.norm();
             if (r == 0) continue;  // coincident particles exert no pairwise force
-            const Vector<Dim> rhat = xij / r;
-            const double dWi = W_.dWdr(r, hi), dWj = W_.dWdr(r, h_[j]);
-            const Vector<Dim> vij = v_[i] - v_[j];
+            // Every term carries ∇W(h_i) or ∇W(h_j): a candidate beyond both supports adds zeros.
+            const double ui = r * invHi, uj = r * invH[j];
+            if (ui >= 1.0 && uj >= 1.0) continue;
+            double w, dwi, dwj;
+            W.shape(ui, w, dwi);
+            W.shape(uj, w, dwj);
+            const double dWi = gradNormi * dwi, dWj = gradNorm[j] * dwj;
+            const Vector<Dim> rhat = xij * (1.0 / r);
+            const Vector<Dim> vij = vi - v[j];
             const double vr = vij.dot(rhat);
-            continuity += b_[j] * vr * dWi;
-            if (tau_) stressForce += (m_[j] / rho_[j]) * (dWi * (taui * rhat) + dWj * ((*tau_)[j].full() * rhat));
+            continuity += b[j] * vr * dWi;
+            if (tau) stressForce += volume[j] * (dWi * (taui * rhat) + dWj * (tau[j].full() * rhat));
             if (differenceForm)
-                force -= (m_[i] / rhoi * m_[j] / rho_[j] * (p_[j] - Pi) * dWi) * rhat;
+                force -= (mi / rhoi * volume[j] * (p[j] - Pi) * dWi) * rhat;
             else
-                force -= (pressureI * b_[j] * dWi + a_[j] * b_[i] * p_[j] / omega(j) * dWj) * rhat;
+                force -= (pressureI * b[j] * dWi + bi * pressureJ[j] * dWj) * rhat;
 
             if (riemann && (d.allPairs || vr <= 0)) {
-                const double rhoBar = 0.5 * (rhoi + rho_[j]);
+                const double cj = c[j];
+                const double invRhoBar = 2.0 / (rhoi + rho[j]);
                 const double F = 0.5 * (dWi + dWj);  // r̂·∇̄W
-                auto signal = [&](double b) {
+                auto signal = [&](double bb) {
                     if (d.alternativeSignal)
-                        return std::sqrt(ci * ci + b * vr * vr) + std::sqrt(c_[j] * c_[j] + b * vr * vr) - vr;
-                    return 0.5 * (ci + c_[j]) - 0.5 * b * vr;
+                        return std::sqrt(ci * ci + bb * vr * vr) + std::sqrt(cj * cj + bb * vr * vr) - vr;
+                    return 0.5 * (ci + cj) - 0.5 * bb * vr;
                 };
                 const double vSignal = signal(d.bv);
-                force += (m_[i] * m_[j] * d.av * vSignal * vr / rhoBar * F) * rhat;
-                if (d.arho > 0) massFlux += m_[j] * d.arho * (Pi - p_[j]) / (rhoBar * signal(d.brho)) * F;
-                heating += m_[j] / rhoBar * (-0.5 * d.av * vSignal * vr * vr + d.ae * signal(d.be) * (ei - energy(j))) * F;
+                const double mjF = m[j] * invRhoBar * F;
+                force += (mi * d.av * vSignal * vr * mjF) * rhat;
+                if (massFluxOn) massFlux += d.arho * (Pi - p[j]) / signal(d.brho) * mjF;
+                heating += (-0.5 * d.av * vSignal * vr * vr + d.ae * signal(d.be) * (ei - (e ? e[j] : 0.0))) * mjF;
             } else if (monaghan && vr < 0) {
-                const double hBar = 0.5 * (hi + h_[j]);
+                const double hBar = 0.5 * (hi + h[j]);
                 const double mu = hBar * vij.dot(xij) / (r * r + 0.01 * hBar * hBar);
-                double viscous = (-d.alpha * 0.5 * (ci + c_[j]) * mu + d.beta * mu * mu) / (0.5 * (rhoi + rho_[j]));
+                double viscous = (-d.alpha * 0.5 * (ci + c[j]) * mu + d.beta * mu * mu) / (0.5 * (rhoi + rho[j]));
                 if (!balsara.empty()) viscous *= 0.5 * (balsara[i] + balsara[j]);
                 const double F = 0.5 * (dWi + dWj);
-                force -= (m_[i] * m_[j] * viscous * F) * rhat;
-                heating += 0.5 * m_[j] * viscous * vr * F;
-                if (d.arho > 0) {
-                    const double signal = 0.5 * (ci + c_[j]) - 0.5 * d.brho * vr;
-                    massFlux += m_[j] * d.arho * (Pi - p_[j]) / (0.5 * (rhoi + rho_[j]) * signal) * F;
+                force -= (mi * m[j] * viscous * F) * rhat;
+                heating += 0.5 * m[j] * viscous * vr * F;
+                if (massFluxOn) {
+                    const double sig = 0.5 * (ci + c[j]) - 0.5 * d.brho * vr;
+                    massFlux += m[j] * d.arho * (Pi - p[j]) / (0.5 * (rhoi + rho[j]) * sig) * F;
                 }
             }
         }
         const double drho = cc_[i] / oi * continuity;
         drhodt_[i] = drho + massFlux;
-        dvdt_[i] = force / m_[i];
+        dvdt_[i] = force / mi;
         dedt_[i] = Pi / (rhoi * rhoi) * drho + heating;
         if (tau_) {
             dvdt_[i] += stressForce / rhoi;
@@ -513,6 +614,8 @@ void SphSolver<Dim>::ensureRates() {
     addGhosts();
     updateNeighbours();
     if (hLaw_->iterative()) solveSmoothingLength();
+    computeKernelFactors();
+    selectNeighbours();
     computeDensitySums();
     computeEquationOfState();
     checkState("computeEquationOfState");
@@ -529,14 +632,20 @@ void SphSolver<Dim>::ensureRates() {
 
 template <int Dim>
 void SphSolver<Dim>::computeVelocityGradient() {
+    if (gradientWithSums_) return;  // done in the density-sum loop
     Stopwatch watch;
-    parallelFor(nReal_, [&](std::size_t i) {
+    const KernelEvaluator<Dim> W = W_;
+    parallelForWork(nReal_, neighbours_.list->pairCount(), [&](std::size_t i) {
         Tensor<Dim> L = Tensor<Dim>::Zero();
+        const double invHi = invH_[i], gradNormi = gradNorm_[i];
         for (const auto j : neighbours_[i]) {
             const Vector<Dim> xij = x_[i] - x_[j];
             const double r = xij.norm();
-            if (r == 0) continue;
-            L -= (m_[j] / rho_[j] * W_.dWdr(r, h_[i]) / r) * (v_[i] - v_[j]) * xij.transpose();
+            const double u = r * invHi;
+            if (r == 0 || u >= 1.0) continue;
+            double w, dw;
+            W.shape(u, w, dw);
+            L -= (volume_[j] * (gradNormi * dw) / r) * (v_[i] - v_[j]) * xij.transpose();
         }
         velocityGradient_[i] = L;
     });

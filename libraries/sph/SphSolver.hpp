@@ -83,6 +83,8 @@ private:
     void removeGhosts();
     void updateNeighbours();
     void computeEquationOfState();
+    void computeKernelFactors();
+    void selectNeighbours();
     void computeDensitySums();
     void solveSmoothingLength();
     void computeVelocityGradient();
@@ -141,6 +143,15 @@ private:
     // Rates f^k and per-particle scheme coefficients (solver scratch, not fields).
     std::vector<Vector<Dim>> dvdt_;
     std::vector<double> drhodt_, dedt_, a_, b_, cc_;
+    // Per-particle kernel factors of this step's h, so that a pair evaluates the kernel's shape
+    // once per smoothing length and divides by nothing: with H = κh the kernel's support,
+    // u = r/H = r·invH, W = wNorm·w(u), ∂W/∂h = dhNorm·(d·w + u·w'), dW/dr = gradNorm·w'(u).
+    // The same products as KernelEvaluator's, so the values are bit-identical to its members.
+    // volume_ = m/ρ. Ghosts included.
+    std::vector<double> invH_, wNorm_, dhNorm_, gradNorm_, volume_;
+    std::vector<double> pressureTerm_;  // a_j P_j/ω_j, scratch of computeRates
+    std::vector<double> radius_;        // scratch of updateNeighbours
+    bool gradientWithSums_ = false;  // the velocity gradient was computed in the density-sum loop
     // Candidate pairs within the support plus a skin, rebuilt only when particles have moved (or h
     // grown) by more than the skin allows; pairs beyond the support cost a kernel evaluation
     // that returns zero. neighbours_ points at the current list.
@@ -151,10 +162,18 @@ private:
     // computed and removed before anything else sees the particles.
     GhostBlock<Dim> ghosts_;
     std::size_t nReal_ = 0;
+    // Rows of the candidate list or, once selectNeighbours() has run this step, of the pairs
+    // within either support (row i: count[i] entries from selected + the candidate row's offset).
     struct Rows {
         const NeighbourList* list;
-        auto operator[](std::size_t i) const { return (*list)[i]; }
-    } neighbours_{nullptr};
+        const NeighbourList::Index* selected;
+        const NeighbourList::Index* count;
+        std::span<const NeighbourList::Index> operator[](std::size_t i) const {
+            if (count) return {selected + list->offsets()[i], count[i]};
+            return (*list)[i];
+        }
+    } neighbours_{nullptr, nullptr, nullptr};
+    std::vector<NeighbourList::Index> selected_, selectedCount_;
     std::size_t rebuilds_ = 0, neighbourUpdates_ = 0;
     double pairInteractions_ = 0;  // candidate pairs visited by the force loop, summed over steps
     bool ratesValid_ = false;
