@@ -42,22 +42,6 @@ namespace mfdyn {
 
 namespace {
 
-template <int Dim>
-std::unique_ptr<ParticleSet<Dim>> adopt(std::unique_ptr<ParticleSetBase> base) {
-    particleSetCast<Dim>(*base);
-    return std::unique_ptr<ParticleSet<Dim>>(static_cast<ParticleSet<Dim>*>(base.release()));
-}
-
-template <int Dim>
-std::vector<double>& requireScalar(ParticleSet<Dim>& p, const std::string& name, const std::string& why) {
-    if (!p.hasField(name)) {
-        std::string have;
-        for (const auto& n : p.fieldNames()) have += " " + n;
-        throw InputError("the particle file has no field '" + name + "' (" + why + "); fields:" + have);
-    }
-    return p.scalarField(name);
-}
-
 // `momentum variational` (default: matched to the density scheme, conservative) or `difference`:
 // dv_i/dt = −ρ_i⁻¹ Σ_j (m_j/ρ_j)(P_j − P_i) ∇_iW_ij(h_i), free of the K-error of §7 but not
 // momentum-conserving (Zisis 2017 §2.4: rejected for shocks, offered for comparison).
@@ -107,7 +91,7 @@ double energyForPressure(const EquationOfState& eos, double rho, double target) 
 template <int Dim>
 SphSolver<Dim>::SphSolver(SolverRun& run)
     : Solver(run),
-      owner_(adopt<Dim>(run.takeParticles())),
+      owner_(adoptParticleSet<Dim>(run.takeParticles())),
       particles_(owner_.get()),
       properties_(run.runCase().readConstant("sphProperties")),
       materialProperties_(run.runCase().readConstant("materialProperties")),
@@ -122,8 +106,8 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
       predictorCorrector_(readIntegrator(properties_)),
       x_(particles_->position()),
       v_(particles_->vectorField("velocity")),
-      m_(requireScalar(*particles_, "mass", "particle masses")),
-      rho_(requireScalar(*particles_, "density", "initial density")),
+      m_(requireScalarField(*particles_, "mass", "particle masses")),
+      rho_(requireScalarField(*particles_, "density", "initial density")),
       p_(particles_->scalarField("pressure")),
       c_(particles_->scalarField("soundSpeed")),
       h_(particles_->scalarField("smoothingLength")),
