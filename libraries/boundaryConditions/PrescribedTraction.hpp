@@ -10,6 +10,7 @@
 // The particles and their shares V_a/Σ V_b are fixed when the condition is built (V = mass /
 // density then) and kept by globalId through reorders. See PrescribedTraction.cpp.
 #include "boundaryConditions/BoundaryCondition.hpp"
+#include "boundaryConditions/VectorTable.hpp"
 
 #include <cstdint>
 #include <vector>
@@ -32,8 +33,7 @@ protected:
     void selectionUpdated(const ParticleSet<Dim>& particles) override;
 
 private:
-    std::vector<double> times_;
-    std::vector<VectorType> values_;
+    VectorTable<Dim> table_;
     double area_ = 0;
     std::vector<std::int64_t> ids_;     // globalId of the loaded particles
     std::vector<std::size_t> indices_;  // their current indices

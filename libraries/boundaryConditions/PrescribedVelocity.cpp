@@ -14,73 +14,18 @@
 
 namespace mfdyn {
 
-namespace {
-
-// A `(vx vy vz)` token as a Dim-vector; extra components must be zero, as for dictionary vectors.
-template <int Dim>
-Vector<Dim> vectorOf(const Token& token, const Dictionary& dict) {
-    if (token.kind != Token::Kind::list)
-        throw dict.error("table", "expected a vector (vx vy vz), found " + token.str());
-    Vector<Dim> v = Vector<Dim>::Zero();
-    for (std::size_t k = 0; k < token.list.size(); ++k) {
-        if (!token.list[k].isNumber())
-            throw dict.error("table", "expected a number, found " + token.list[k].str());
-        const double x = token.list[k].number();
-        if (int(k) < Dim)
-            v[k] = x;
-        else if (x != 0.0)
-            throw dict.error("table", "component " + std::to_string(k + 1) + " of " + token.str() +
-                                          " is non-zero but the case has fewer dimensions");
-    }
-    if (int(token.list.size()) < Dim)
-        throw dict.error("table", "expected " + std::to_string(Dim) + " components, found " + token.str());
-    return v;
-}
-
-}  // namespace
-
 template <int Dim>
 PrescribedVelocity<Dim>::PrescribedVelocity(const Dictionary& dict, const ParticleSet<Dim>& particles)
-    : BoundaryCondition<Dim>(dict, particles, false) {
-    const bool hasVelocity = dict.found("velocity"), hasTable = dict.found("table");
-    if (hasVelocity == hasTable)
-        throw InputError(
-            dict.where(), dict.scope(),
-            "give exactly one of `velocity (vx vy vz);` [m/s] and `table ((t (vx vy vz)) ...);`");
-    if (hasVelocity) {
-        times_ = {0.0};
-        values_ = {dict.get<VectorType>("velocity")};
-        return;
-    }
-    const Entry& entry = dict.entry("table");
-    if (entry.tokens.size() != 1 || entry.tokens[0].kind != Token::Kind::list || entry.tokens[0].list.empty())
-        throw dict.error("table", "expected a list of (time (vx vy vz)) pairs");
-    for (const Token& row : entry.tokens[0].list) {
-        if (row.kind != Token::Kind::list || row.list.size() != 2 || !row.list[0].isNumber())
-            throw dict.error("table", "expected (time (vx vy vz)), found " + row.str());
-        const double t = row.list[0].number();
-        if (!times_.empty() && !(t > times_.back()))
-            throw dict.error("table", "times must increase, found " + row.list[0].str() + " after " +
-                                          std::to_string(times_.back()));
-        times_.push_back(t);
-        values_.push_back(vectorOf<Dim>(row.list[1], dict));
-    }
-}
+    : BoundaryCondition<Dim>(dict, particles, false), table_(dict, "velocity", "m/s") {}
 
 template <int Dim>
 typename PrescribedVelocity<Dim>::VectorType PrescribedVelocity<Dim>::velocity(double t) const {
-    if (t <= times_.front()) return values_.front();
-    if (t >= times_.back()) return values_.back();
-    const auto k = std::size_t(std::upper_bound(times_.begin(), times_.end(), t) - times_.begin()) - 1;
-    const double w = (t - times_[k]) / (times_[k + 1] - times_[k]);
-    return (1.0 - w) * values_[k] + w * values_[k + 1];
+    return table_.value(t);
 }
 
 template <int Dim>
 typename PrescribedVelocity<Dim>::VectorType PrescribedVelocity<Dim>::acceleration(double t) const {
-    if (t < times_.front() || t >= times_.back()) return VectorType::Zero();
-    const auto k = std::size_t(std::upper_bound(times_.begin(), times_.end(), t) - times_.begin()) - 1;
-    return (values_[k + 1] - values_[k]) / (times_[k + 1] - times_[k]);
+    return table_.rate(t);
 }
 
 template <int Dim>

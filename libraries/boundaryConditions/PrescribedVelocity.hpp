@@ -5,6 +5,7 @@
 //   table ((t0 (vx vy vz)) (t1 (vx vy vz)) ...);    piecewise linear in t [s], held constant
 //                                                   before the first and after the last time.
 #include "boundaryConditions/BoundaryCondition.hpp"
+#include "boundaryConditions/VectorTable.hpp"
 
 #include <vector>
 
@@ -25,8 +26,7 @@ protected:
     void accelerationConstraint(ParticleSet<Dim>&, std::vector<VectorType>& a, double t) override;
 
 private:
-    std::vector<double> times_;
-    std::vector<VectorType> values_;
+    VectorTable<Dim> table_;
 };
 
 }  // namespace mfdyn
