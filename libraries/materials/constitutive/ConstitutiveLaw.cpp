@@ -15,31 +15,7 @@ namespace mfdyn {
 
 namespace {
 
-// The dictionary holding `key`: the law's own, else the enclosing material's, else null.
-const Dictionary* holderOf(const Dictionary& dict, std::string_view key) {
-    if (dict.found(key)) return &dict;
-    if (const Dictionary* material = dict.parent(); material && material->found(key)) return material;
-    return nullptr;
-}
-
-std::string number(double value) {
-    std::ostringstream out;
-    out.precision(10);
-    out << value;
-    return out.str();
-}
-
-std::string describeBounds(double lower, bool lowerOpen, double upper, bool upperOpen) {
-    std::string s;
-    if (std::isfinite(lower)) s += (lowerOpen ? "> " : ">= ") + number(lower);
-    if (std::isfinite(upper))
-        s += (s.empty() ? "" : " and ") + std::string(upperOpen ? "< " : "<= ") + number(upper);
-    return s;
-}
-
-std::string scopeOf(const Dictionary& dict, const char* key) {
-    return (dict.scope().empty() ? std::string() : dict.scope() + "/") + key;
-}
+using materialParameters::holderOf;
 
 const char* const elasticChoices =
     "give either 'youngsModulus' and 'poissonRatio', or 'shearModulus' and 'bulkModulus' (in this "
@@ -109,45 +85,19 @@ std::string ConstitutiveLaw::describe() const {
 }
 
 std::string ConstitutiveLaw::formatNumber(double value) {
-    return number(value);
+    return materialParameters::formatNumber(value);
 }
 
 double ConstitutiveLaw::read(const Dictionary& dict, const Keyword& key) {
-    const Dictionary* holder = holderOf(dict, key.name);
-    if (!holder) {
-        if (key.fallback) {
-            dict.noteDefault(scopeOf(dict, key.name) + " " + number(*key.fallback));
-            return *key.fallback;
-        }
-        const std::string scope =
-            dict.parent() ? " or in the material dictionary '" + dict.parent()->scope() + "'" : std::string();
-        throw InputError(dict.where(), dict.scope(),
-                         "missing keyword '" + std::string(key.name) + "': " + key.meaning + " [" + key.unit +
-                             "], required by constitutiveLaw type '" + dict.get<std::string>("type") +
-                             "' (give it in this dictionary" + scope + ")");
-    }
-    return *readOwn(*holder, key);
+    return materialParameters::read(dict, key, "constitutiveLaw");
 }
 
 std::optional<double> ConstitutiveLaw::readOwn(const Dictionary& dict, const Keyword& key) {
-    if (!dict.found(key.name)) return std::nullopt;
-    const double value = dict.get<double>(key.name);
-    const bool below = key.lowerOpen ? !(value > key.lower) : !(value >= key.lower);
-    const bool above = key.upperOpen ? !(value < key.upper) : !(value <= key.upper);
-    if (below || above || !std::isfinite(value))
-        throw dict.error(key.name, "expected " + std::string(key.meaning) + " [" + key.unit + "] " +
-                                       describeBounds(key.lower, key.lowerOpen, key.upper, key.upperOpen) +
-                                       ", found " + number(value));
-    return value;
+    return materialParameters::readOwn(dict, key);
 }
 
 bool ConstitutiveLaw::readSwitch(const Dictionary& dict, const char* key, bool fallback) {
-    const Dictionary* holder = holderOf(dict, key);
-    if (!holder) {
-        dict.noteDefault(scopeOf(dict, key) + (fallback ? " yes" : " no"));
-        return fallback;
-    }
-    return holder->get<bool>(key);
+    return materialParameters::readSwitch(dict, key, fallback);
 }
 
 }  // namespace mfdyn

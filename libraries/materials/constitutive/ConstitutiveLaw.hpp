@@ -35,6 +35,7 @@
 #include "core/Dictionary.hpp"
 #include "core/Registry.hpp"
 #include "core/Tensor.hpp"
+#include "materials/MaterialParameters.hpp"
 
 #include <cstddef>
 #include <limits>
@@ -106,16 +107,7 @@ public:
 
 protected:
     // A scalar keyword, declared once, read and bounds-checked through it.
-    struct Keyword {
-        const char* name;
-        const char* unit;  // SI; "-" for dimensionless
-        const char* meaning;
-        std::optional<double> fallback;  // nullopt: required
-        double lower = -std::numeric_limits<double>::infinity();
-        bool lowerOpen = false;  // lower bound excluded (a modulus > 0)
-        double upper = std::numeric_limits<double>::infinity();
-        bool upperOpen = false;
-    };
+    using Keyword = MaterialKeyword;  // materials/MaterialParameters.hpp
 
     // For laws that can derive the elastic constants from their own parameters (mooneyRivlin):
     // with elasticConstantsRequired false, mu and kappa stay NaN when none of the four keywords

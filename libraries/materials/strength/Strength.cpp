@@ -8,34 +8,9 @@
 
 namespace mfdyn {
 
-namespace {
-
-// The dictionary holding `key`: the model's own, else the enclosing material's, else null.
-const Dictionary* holderOf(const Dictionary& dict, std::string_view key) {
-    if (dict.found(key)) return &dict;
-    if (const Dictionary* material = dict.parent(); material && material->found(key)) return material;
-    return nullptr;
-}
-
-std::string number(double value) {
-    std::ostringstream out;
-    out.precision(10);
-    out << value;
-    return out.str();
-}
-
-std::string describeBounds(double lower, bool lowerOpen, double upper) {
-    std::string s;
-    if (std::isfinite(lower)) s += (lowerOpen ? "> " : ">= ") + number(lower);
-    if (std::isfinite(upper)) s += (s.empty() ? "<= " : " and <= ") + number(upper);
-    return s;
-}
-
-}  // namespace
-
 template <int Dim>
 std::string Strength<Dim>::formatNumber(double value) {
-    return number(value);
+    return materialParameters::formatNumber(value);
 }
 
 template <int Dim>
@@ -43,55 +18,18 @@ Strength<Dim>::Strength(const Dictionary& dict) : type_(dict.get<std::string>("t
 
 template <int Dim>
 double Strength<Dim>::read(const Dictionary& dict, const Keyword& key) {
-    const Dictionary* holder = holderOf(dict, key.name);
-    const std::string what = std::string(key.meaning) + " [" + key.unit + "]";
-    if (!holder) {
-        if (key.fallback) {
-            dict.noteDefault((dict.scope().empty() ? std::string() : dict.scope() + "/") + key.name + " " +
-                             number(*key.fallback));
-            return *key.fallback;
-        }
-        const std::string scope =
-            dict.parent() ? " or in the material dictionary '" + dict.parent()->scope() + "'" : std::string();
-        throw InputError(dict.where(), dict.scope(),
-                         "missing keyword '" + std::string(key.name) + "': " + what +
-                             ", required by strength type '" + dict.get<std::string>("type") +
-                             "' (give it in this dictionary" + scope + ")");
-    }
-    const double value = holder->get<double>(key.name);
-    const bool below = key.lowerOpen ? !(value > key.lower) : !(value >= key.lower);
-    if (below || !(value <= key.upper) || !std::isfinite(value))
-        throw holder->error(key.name, "expected " + what + " " +
-                                          describeBounds(key.lower, key.lowerOpen, key.upper) + ", found " +
-                                          number(value));
-    return value;
+    return materialParameters::read(dict, key, "strength");
 }
 
 template <int Dim>
 std::string Strength<Dim>::readWord(const Dictionary& dict, const char* key, const std::string& fallback,
                                     const std::vector<std::string>& allowed) {
-    const Dictionary* holder = holderOf(dict, key);
-    if (!holder) {
-        dict.noteDefault((dict.scope().empty() ? std::string() : dict.scope() + "/") + key + " " + fallback);
-        return fallback;
-    }
-    const auto value = holder->get<std::string>(key);
-    for (const auto& a : allowed)
-        if (value == a) return value;
-    std::string list;
-    for (const auto& a : allowed) list += (list.empty() ? "" : " | ") + a;
-    throw holder->error(key, "expected one of " + list + ", found '" + value + "'");
+    return materialParameters::readWord(dict, key, fallback, allowed);
 }
 
 template <int Dim>
 bool Strength<Dim>::readSwitch(const Dictionary& dict, const char* key, bool fallback) {
-    const Dictionary* holder = holderOf(dict, key);
-    if (!holder) {
-        dict.noteDefault((dict.scope().empty() ? std::string() : dict.scope() + "/") + key +
-                         (fallback ? " yes" : " no"));
-        return fallback;
-    }
-    return holder->get<bool>(key);
+    return materialParameters::readSwitch(dict, key, fallback);
 }
 
 template <int Dim>

@@ -48,6 +48,7 @@
 #include "core/Dictionary.hpp"
 #include "core/Registry.hpp"
 #include "core/Tensor.hpp"
+#include "materials/MaterialParameters.hpp"
 
 #include <cstddef>
 #include <limits>
@@ -79,15 +80,7 @@ public:
     };
 
     // A scalar keyword of a model: declared once, read, bounds-checked and reported through it.
-    struct Keyword {
-        const char* name;
-        const char* unit;  // SI; "-" for dimensionless
-        const char* meaning;
-        std::optional<double> fallback;  // nullopt: required
-        double lower = -std::numeric_limits<double>::infinity();
-        bool lowerOpen = false;  // lower bound excluded (e.g. a modulus > 0)
-        double upper = std::numeric_limits<double>::infinity();
-    };
+    using Keyword = MaterialKeyword;  // materials/MaterialParameters.hpp
 
     virtual ~Strength() = default;
     Strength(const Strength&) = delete;
