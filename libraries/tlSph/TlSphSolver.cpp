@@ -434,6 +434,7 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
     const double* J = J_ ? withGhosts(*J_, JAll_, GhostMap::deformation) : nullptr;
     const double* rho0 = withGhosts(rho0_, rho0All_, GhostMap::copy);
     const bool lapMomentum = !lapP_.empty(), lapJacobian = !lapJ_.empty();
+    const bool evolveF = formulation_->evolvesF();
     std::vector<Vector<Dim>> force(n);
     parallelForWork(n, offsets[n], [&](std::size_t a) {
         Tensor<Dim> G = Tensor<Dim>::Zero();
@@ -450,7 +451,7 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
             if (lapJacobian) LJ += Vb * lap[k] * (J[b] - J[a]);
         }
         force[a] = -T;
-        if (formulation_->evolvesF()) dFdt_[a] = G;
+        if (evolveF) dFdt_[a] = G;
         if (H_ || J_) {
             const Tensor<3> G3 = embed<Dim>(G, 0.0);
             if (H_) dHdt_[a] = inPlane<Dim>(tensorCross(embed<Dim>((*F_)[a], 1.0), G3));
