@@ -2,7 +2,7 @@
 // Hiermaier 1997; Zisis 2017 §6.2), from the particles. With s = x·d the distance along the impact
 // direction d and ℓ the lateral distance from the impact axis (through the origin):
 //
-//   debris       particles with s > rear + ½ spacing (behind the target's rear face)
+//   debris       particles with s > rear (behind the target's rear face)
 //   length L     max s over the debris − rear            (from the rear face to the cloud's tip)
 //   width W      max ℓ − min ℓ over the debris in 2D, 2·max |ℓ| in 3D (largest lateral extent)
 //   hole D       in 2D: the gap between the innermost target particles left and right of the axis
@@ -74,12 +74,10 @@ void DebrisCloud::write() {
     const int dim = fields.dimension();
     const FieldBase& x = fields.field("position");
     const FieldBase& region = fields.field("region");
-    const FieldBase* h = fields.findField("smoothingLength");
     // A lateral axis in 2D: d rotated by 90 degrees.
     const double lateral2D[2] = {-direction_[1], direction_[0]};
 
     std::vector<double> s, lateral, holeLeft, holeRight;
-    double spacing = 0;
     for (std::size_t i = 0; i < fields.size(); ++i) {
         double along = 0, across2D = 0, r2 = 0;
         for (int d = 0; d < dim; ++d) along += x.component(i, d) * direction_[d];
@@ -89,7 +87,6 @@ void DebrisCloud::write() {
             if (dim == 2) across2D += x.component(i, d) * lateral2D[d];
         }
         const double across = dim == 2 ? across2D : std::sqrt(r2);
-        if (h) spacing = std::max(spacing, h->component(i, 0));
         const bool target = std::find(targetRegions_.begin(), targetRegions_.end(),
                                       std::int64_t(region.component(i, 0))) != targetRegions_.end();
         if (target && along >= front_ && along <= rear_) (across >= 0 ? holeRight : holeLeft).push_back(std::abs(across));
