@@ -175,7 +175,7 @@ std::string page(const TypeDoc& doc, const std::vector<std::string>& related, co
             entry(k.name, k.sampleValue(), comment, k.kind == Keyword::Kind::optional);
         }
     } else {
-        s << "    ...                                 // see Keywords\n";
+        s << "    ...                                 // see Equations and source\n";
     }
     s << "}\n```\n\n";
 
@@ -226,7 +226,7 @@ std::string page(const TypeDoc& doc, const std::vector<std::string>& related, co
                  "enclosing "
                  "dictionary (a material's constants); an entry in this dictionary wins.\n";
     }
-    s << "- Selected by `type " << item.name << ";` in a `" << fam.name << "` dictionary; provided by `"
+    s << "- Selected by `type " << item.name << ";` in the " << fam.name << " dictionary; provided by `"
       << item.library << "`.\n\n";
 
     // Related

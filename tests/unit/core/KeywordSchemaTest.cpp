@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <functional>
 #include <stdexcept>
 
 using namespace mfdyn;
@@ -172,7 +173,8 @@ TEST(KeywordSchema, SummaryAndSampleValues) {
     EXPECT_TRUE(contains(summary, ">= 0 and <= 1")) << summary;
     EXPECT_TRUE(contains(summary, "linear | cubic")) << summary;
     EXPECT_TRUE(contains(summary, "or in the enclosing dictionary")) << summary;
-    const auto& keys = widgetSchema().keywords();
+    const KeywordSchema schema = widgetSchema();
+    const auto& keys = schema.keywords();
     EXPECT_EQ(keys[0].sampleValue(), "1");
     EXPECT_EQ(keys[1].sampleValue(), "0.05");
     EXPECT_EQ(keys[3].sampleValue(), "1");
@@ -223,7 +225,8 @@ TEST(KeywordSchema, RegistrationCarriesSchemaAndSourceFile) {
     testing::internal::GetCapturedStdout();
 
     const std::string listing = RegistryIndex::global().listing();
-    EXPECT_TRUE(contains(listing, "    spring  a spring\n        stiffness  N/m  required")) << listing;
+    EXPECT_TRUE(contains(listing, "a spring  [coreKeywordSchemaTest]\n        stiffness  N/m  required"))
+        << listing;
     const std::string described = RegistryIndex::global().describe("widgetForTest/spring");
     EXPECT_TRUE(contains(described, "source:  tests/unit/core/KeywordSchemaTest.cpp")) << described;
     EXPECT_TRUE(contains(described, "damping ratio")) << described;

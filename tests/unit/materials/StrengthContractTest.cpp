@@ -140,7 +140,8 @@ TYPED_TEST(StrengthContract, BuiltInTypesAreRegistered) {
 TYPED_TEST(StrengthContract, RequiredKeywordsAreNamedWhenMissing) {
     constexpr int Dim = TypeParam::value;
     for (const auto& type : registeredTypes<Dim>()) {
-        for (const Keyword& key : schemaOf<Dim>(type).keywords()) {
+        const KeywordSchema schema = schemaOf<Dim>(type);
+        for (const Keyword& key : schema.keywords()) {
             if (key.kind == Keyword::Kind::defaulted) {
                 if (key.type != Keyword::Type::scalar) continue;
                 const double v = key.defaultNumber;
