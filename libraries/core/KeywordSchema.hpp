@@ -14,7 +14,11 @@
 //             .scalar("minimumPressure", "Pa", "tension cut-off").atMost(0).optional();
 //     }
 //
-//     MieGruneisen::MieGruneisen(const Dictionary& dict) : MieGruneisen(dict, keywords().read(dict)) {}
+//     MieGruneisen::MieGruneisen(const Dictionary& dict) : EquationOfState(dict) {
+//         const KeywordValues v = keywords().read(dict);
+//         c0_ = v.scalar("c0");
+//         ...
+//     }
 //
 // read() checks every declared keyword at once, in declaration order: a missing required one, a
 // value of the wrong type, outside its bounds or not among its words is an InputError at the file
@@ -104,6 +108,8 @@ public:
 
     const std::string& family() const { return family_; }
     const std::string& type() const { return type_; }
+    // A reference into this schema: keep the schema itself alive while iterating (a range-for over
+    // `item.keywords().keywords()` would dangle).
     const std::vector<Keyword>& keywords() const { return keywords_; }
     const Keyword* find(std::string_view name) const;
     bool empty() const { return keywords_.empty(); }

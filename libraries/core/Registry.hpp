@@ -14,7 +14,10 @@
 // The tables live in one place in libmfdyn_core (RegistryIndex), keyed by family name, so a
 // model registered by a user library loaded with dlopen lands in the same table the solver reads,
 // whatever the symbol visibility of template statics. Each item records the shared object that
-// registered it (dladdr), so listings and duplicate-name errors name libraries.
+// registered it (dladdr), so listings and duplicate-name errors name libraries, and the source
+// file of the model (__FILE__, relative to the source tree) for the generated docs (mfDoc). A
+// model that declares `static KeywordSchema keywords()` (core/KeywordSchema.hpp) registers it
+// with the same line: -listModels, -describe and mfDoc show its keywords.
 #include "core/Dictionary.hpp"
 #include "core/KeywordSchema.hpp"
 
