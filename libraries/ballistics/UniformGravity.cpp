@@ -9,8 +9,14 @@
 
 namespace mfdyn {
 
+KeywordSchema UniformGravity::keywords() {
+    return KeywordSchema(familyName, "uniformGravity")
+        .vector("g", "m/s^2", "the acceleration, at least one component per dimension (zero beyond it)");
+}
+
 UniformGravity::UniformGravity(const Dictionary& dict, int dimension) : BodyForce(dict, dimension) {
-    const auto g = dict.get<std::vector<double>>("g");
+    const KeywordValues values = keywords().read(dict);
+    const std::vector<double>& g = values.vector("g");
     if (int(g.size()) < dimension)
         throw dict.error("g", "expected a vector of at least " + std::to_string(dimension) + " components for a " +
                                   std::to_string(dimension) + "D case");

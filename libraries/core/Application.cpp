@@ -18,7 +18,10 @@ namespace {
 const std::vector<ApplicationOption>& commonOptions() {
     static const std::vector<ApplicationOption> options{
         {"case", "dir", "the case directory (default: the current directory)"},
-        {"listModels", "", "list every model family and its types with descriptions, then exit"},
+        {"listModels", "", "list every model family, its types and their keywords, then exit"},
+        {"describe", "family|type",
+         "describe a model family, or one type with its keywords and their meaning (type or family/type), "
+         "then exit"},
         {"help", "", "print this usage and exit"},
         {"version", "", "print the version and exit"},
     };
@@ -102,6 +105,16 @@ std::string usage(const ApplicationInfo& info) {
     return s.str();
 }
 
+void loadToolkitLibraries() {
+    const std::filesystem::path self = sharedObjectPath(reinterpret_cast<const void*>(&runApplication));
+    std::error_code ec;
+    for (const auto& item : std::filesystem::directory_iterator(self.parent_path(), ec)) {
+        const std::string name = item.path().filename().string();
+        if (name.rfind("libmfdyn_", 0) == 0 && item.path().extension() == ".so")
+            dlopen(item.path().c_str(), RTLD_NOW | RTLD_GLOBAL);
+    }
+}
+
 int runApplication(int argc, char** argv, const ApplicationInfo& info,
                    const std::function<int(const Arguments&)>& body) {
     try {
@@ -114,20 +127,17 @@ int runApplication(int argc, char** argv, const ApplicationInfo& info,
             std::cout << info.name << " (mfdyn " << MFDYN_VERSION << ")\n";
             return 0;
         }
-        if (args.has("listModels")) {
+        if (args.has("listModels") || args.has("describe")) {
             // Every toolkit library beside this one, so any application lists every family.
-            const std::filesystem::path self = sharedObjectPath(reinterpret_cast<const void*>(&runApplication));
-            std::error_code ec;
-            for (const auto& item : std::filesystem::directory_iterator(self.parent_path(), ec)) {
-                const std::string name = item.path().filename().string();
-                if (name.rfind("libmfdyn_", 0) == 0 && item.path().extension() == ".so")
-                    dlopen(item.path().c_str(), RTLD_NOW | RTLD_GLOBAL);
-            }
+            loadToolkitLibraries();
             // A case's own libraries extend the listing, so a user sees what their case can select.
             const auto controlDict = args.caseDir() / "system" / "controlDict";
             if (info.usesCase && std::filesystem::exists(controlDict))
                 LibraryLoader::load(Dictionary::read(controlDict), args.caseDir());
-            std::cout << RegistryIndex::global().listing();
+            if (auto what = args.find("describe"))
+                std::cout << RegistryIndex::global().describe(*what);
+            else
+                std::cout << RegistryIndex::global().listing();
             return 0;
         }
         if (args.positional().size() < info.positional.size())

@@ -51,6 +51,10 @@ private:
 
 std::string usage(const ApplicationInfo& info);
 
+// dlopen every toolkit library (libmfdyn_*.so) beside libmfdyn_core, so that every family's
+// registrations are made (-listModels, -describe, mfDoc).
+void loadToolkitLibraries();
+
 // Parses arguments, answers -help/-listModels/-version itself, otherwise runs `body`.
 // Any mfdyn::Error (or other exception) is printed as "Error: ..." on stderr and gives status 1.
 int runApplication(int argc, char** argv, const ApplicationInfo& info,

@@ -88,21 +88,99 @@ void RegistryIndex::checkConflicts() const {
     if (!all.empty()) throw Error(all);
 }
 
-std::string RegistryIndex::listing() const {
+namespace {
+
+// The items of `fam` one per name (the first dimension of a Dim-templated family).
+std::vector<const RegistryItem*> distinctItems(const RegistryFamily& fam) {
+    std::vector<const RegistryItem*> out;
+    for (const auto& item : fam.items)
+        if (out.empty() || out.back()->name != item.name) out.push_back(&item);
+    return out;
+}
+
+std::string familyListing(const RegistryFamily& fam) {
     std::ostringstream s;
-    for (const RegistryFamily* fam : families()) {
-        s << fam->name << "\n";
-        std::size_t width = 0;
-        for (const auto& item : fam->items) width = std::max(width, item.name.size());
-        for (std::size_t k = 0; k < fam->items.size(); ++k) {
-            const RegistryItem& item = fam->items[k];
-            if (k > 0 && fam->items[k - 1].name == item.name) continue;  // one line for all dimensions
-            s << "    " << item.name << std::string(width + 2 - item.name.size(), ' ') << item.description;
-            if (item.library.rfind("libmfdyn_", 0) != 0) s << "  [" << item.library << "]";
-            s << "\n";
-        }
+    s << fam.name << "\n";
+    std::size_t width = 0;
+    for (const auto& item : fam.items) width = std::max(width, item.name.size());
+    for (const RegistryItem* item : distinctItems(fam)) {
+        s << "    " << item->name << std::string(width + 2 - item->name.size(), ' ') << item->description;
+        if (item->library.rfind("libmfdyn_", 0) != 0) s << "  [" << item->library << "]";
+        s << "\n";
+        if (item->keywords) s << item->keywords().summary("        ");
     }
     return s.str();
+}
+
+std::string typeDescription(const RegistryFamily& fam, const RegistryItem& item) {
+    std::ostringstream s;
+    s << fam.name << " " << item.name << ": " << item.description << "\n";
+    s << "    library: " << item.library << "\n";
+    if (!item.sourceFile.empty()) s << "    source:  " << item.sourceFile << "\n";
+    std::string dims;
+    for (const auto& other : fam.items)
+        if (other.name == item.name && other.dimension > 0)
+            dims += (dims.empty() ? "" : ", ") + std::to_string(other.dimension) + "D";
+    if (!dims.empty()) s << "    dimensions: " << dims << "\n";
+    if (!item.keywords) {
+        s << "    keywords: no schema declared yet (see the source file)\n";
+        return s.str();
+    }
+    const KeywordSchema schema = item.keywords();
+    s << "    keywords:\n";
+    for (const Keyword& k : schema.keywords()) {
+        s << "        " << k.name << "  [" << k.unit << "]  " << k.kindText() << "  " << k.typeText();
+        if (const std::string b = k.boundsText(); !b.empty()) s << ", " << b;
+        s << "\n            " << k.meaning;
+        if (k.orEnclosing) s << " (here or in the enclosing dictionary)";
+        s << "\n";
+    }
+    return s.str();
+}
+
+}  // namespace
+
+std::string RegistryIndex::listing() const {
+    std::string s;
+    for (const RegistryFamily* fam : families()) s += familyListing(*fam);
+    return s;
+}
+
+std::string RegistryIndex::describe(std::string_view what) const {
+    const std::size_t cut = what.find('/');
+    const std::string_view familyPart =
+        cut == std::string_view::npos ? std::string_view{} : what.substr(0, cut);
+    const std::string_view typePart = cut == std::string_view::npos ? what : what.substr(cut + 1);
+    if (familyPart.empty())
+        if (const RegistryFamily* fam = findFamily(what)) return familyListing(*fam);
+    std::string s;
+    std::vector<std::string> all;
+    for (const RegistryFamily* fam : families()) {
+        all.push_back(fam->name);
+        if (!familyPart.empty() && fam->name != familyPart) continue;
+        for (const RegistryItem* item : distinctItems(*fam)) {
+            all.push_back(item->name);
+            if (item->name == typePart) s += (s.empty() ? "" : "\n") + typeDescription(*fam, *item);
+        }
+    }
+    if (!s.empty()) return s;
+    std::string message = "-describe: no model family or type '" + std::string(what) + "'";
+    if (auto guess = closestMatch(typePart, all); !guess.empty())
+        message += "; did you mean '" + guess + "'?";
+    message += "\n    families:";
+    for (const RegistryFamily* fam : families()) message += " " + fam->name;
+    throw InputError(message);
+}
+
+std::string sourceFileRelative(const char* file) {
+    if (!file || !*file) return {};
+    const std::filesystem::path path = std::filesystem::path(file).lexically_normal();
+#ifdef MFDYN_SOURCE_DIR
+    const std::filesystem::path root = std::filesystem::path(MFDYN_SOURCE_DIR).lexically_normal();
+    const std::filesystem::path relative = path.lexically_relative(root);
+    if (!relative.empty() && *relative.begin() != "..") return relative.generic_string();
+#endif
+    return path.generic_string();
 }
 
 std::string sharedObjectOf(const void* address) {

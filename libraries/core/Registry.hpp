@@ -14,13 +14,18 @@
 // The tables live in one place in libmfdyn_core (RegistryIndex), keyed by family name, so a
 // model registered by a user library loaded with dlopen lands in the same table the solver reads,
 // whatever the symbol visibility of template statics. Each item records the shared object that
-// registered it (dladdr), so listings and duplicate-name errors name libraries.
+// registered it (dladdr), so listings and duplicate-name errors name libraries, and the source
+// file of the model (__FILE__, relative to the source tree) for the generated docs (mfDoc). A
+// model that declares `static KeywordSchema keywords()` (core/KeywordSchema.hpp) registers it
+// with the same line: -listModels, -describe and mfDoc show its keywords.
 #include "core/Dictionary.hpp"
+#include "core/KeywordSchema.hpp"
 
+#include <concepts>
 #include <functional>
-#include <typeinfo>
 #include <memory>
 #include <string>
+#include <typeinfo>
 #include <vector>
 
 namespace mfdyn {
@@ -33,6 +38,13 @@ struct RegistryItem {
     // typeid name of the factory: a family templated on the dimension (Strength<Dim>) keeps one
     // item per name and dimension under one family name.
     std::string signature;
+    // The model's source file, relative to the source tree when it was built there
+    // ("libraries/materials/equationOfState/MieGruneisen.cpp"); absolute for a user library.
+    std::string sourceFile;
+    // Its keyword schema, when the model declares `static KeywordSchema keywords()`.
+    KeywordSchema (*keywords)() = nullptr;
+    // 1, 2 or 3 for a family templated on the dimension (one item per dimension), else 0.
+    int dimension = 0;
 };
 
 struct RegistryFamily {
@@ -58,12 +70,21 @@ public:
     void add(std::string_view family, RegistryItem item);
     // Throws Error naming both libraries if any name was registered twice.
     void checkConflicts() const;
-    // Text for -listModels: every family and its types with descriptions.
+    // Text for -listModels: every family and its types with descriptions, and the keywords of
+    // each type that declares a schema (name, unit, required or default, bounds or words).
     std::string listing() const;
+    // Text for -describe <what>: `what` is a family ("equationOfState": its listing), a type
+    // ("mieGruneisen", or "equationOfState/mieGruneisen" where a name is in several families: the
+    // description, source file, library, dimensions and every keyword with its meaning).
+    // Throws InputError listing the families when nothing matches.
+    std::string describe(std::string_view what) const;
 
 private:
     std::vector<std::unique_ptr<RegistryFamily>> families_;
 };
+
+// `file` (a __FILE__) relative to the source tree libmfdyn_core was built from, when inside it.
+std::string sourceFileRelative(const char* file);
 
 // The shared object holding `address` ("libmfdyn_core.so", "libmyModels.so", or the program).
 std::string sharedObjectOf(const void* address);
@@ -74,10 +95,13 @@ public:
     using Factory = std::function<std::unique_ptr<Base>(Args...)>;
 
     static void add(const std::string& name, const std::string& description, Factory make,
-                    const void* registrant) {
-        RegistryIndex::global().add(Base::familyName,
+                    const void* registrant, const char* sourceFile = "",
+                    KeywordSchema (*keywords)() = nullptr, int dimension = 0) {
+        RegistryIndex::global().add(
+            Base::familyName,
             RegistryItem{name, description, sharedObjectOf(registrant),
-                         std::make_shared<const Factory>(std::move(make)), typeid(Factory).name()});
+                         std::make_shared<const Factory>(std::move(make)), typeid(Factory).name(),
+                         sourceFileRelative(sourceFile), keywords, dimension});
     }
 
     // Select by the `type` entry of `dict`, which is passed on as the first constructor argument
@@ -106,38 +130,48 @@ public:
     static std::vector<std::string> names() { return RegistryIndex::global().family(Base::familyName).names(); }
 };
 
-// Registration object: one static per model, made by MFDYN_REGISTER.
+// Registration object: one static per model, made by MFDYN_REGISTER. A model that declares
+// `static KeywordSchema keywords()` registers its schema with it (core/KeywordSchema.hpp).
 template <class Base, class Derived>
 struct Registration {
-    Registration(const char* name, const char* description) {
-        register_(name, description, static_cast<typename Base::Selector*>(nullptr));
+    Registration(const char* name, const char* description, const char* sourceFile = "", int dimension = 0) {
+        register_(name, description, sourceFile, dimension, static_cast<typename Base::Selector*>(nullptr));
     }
 
 private:
     template <class... Args>
-    void register_(const char* name, const char* description, Registry<Base, Args...>*) {
+    void register_(const char* name, const char* description, const char* sourceFile, int dimension,
+                   Registry<Base, Args...>*) {
+        KeywordSchema (*keywords)() = nullptr;
+        if constexpr (requires {
+                          { Derived::keywords() } -> std::same_as<KeywordSchema>;
+                      })
+            keywords = &Derived::keywords;
         Registry<Base, Args...>::add(
-            name, description, [](Args... args) -> std::unique_ptr<Base> {
+            name, description,
+            [](Args... args) -> std::unique_ptr<Base> {
                 return std::make_unique<Derived>(std::forward<Args>(args)...);
             },
-            this);
+            this, sourceFile, keywords, dimension);
     }
 };
 
 #define MFDYN_CONCAT_IMPL(a, b) a##b
 #define MFDYN_CONCAT(a, b) MFDYN_CONCAT_IMPL(a, b)
-#define MFDYN_REGISTER(Base, Derived, name, description) \
-    static const ::mfdyn::Registration<Base, Derived> MFDYN_CONCAT(mfdynRegistration_, __LINE__) { name, description }
+#define MFDYN_REGISTER(Base, Derived, name, description)                                           \
+    static const ::mfdyn::Registration<Base, Derived> MFDYN_CONCAT(mfdynRegistration_, __LINE__) { \
+        name, description, __FILE__                                                                \
+    }
 
 // For families templated on the space dimension (template <int Dim> class Strength): registers
 // Derived<1>, <2>, <3> under one name.
 #define MFDYN_REGISTER_DIM(Base, Derived, name, description)                                              \
     static const ::mfdyn::Registration<Base<1>, Derived<1>> MFDYN_CONCAT(mfdynRegistration1_, __LINE__){  \
-        name, description};                                                                               \
+        name, description, __FILE__, 1};                                                                  \
     static const ::mfdyn::Registration<Base<2>, Derived<2>> MFDYN_CONCAT(mfdynRegistration2_, __LINE__){  \
-        name, description};                                                                               \
+        name, description, __FILE__, 2};                                                                  \
     static const ::mfdyn::Registration<Base<3>, Derived<3>> MFDYN_CONCAT(mfdynRegistration3_, __LINE__) { \
-        name, description                                                                                 \
+        name, description, __FILE__, 3                                                                    \
     }
 
 }  // namespace mfdyn

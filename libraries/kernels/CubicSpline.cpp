@@ -11,7 +11,7 @@
 
 namespace mfdyn {
 
-CubicSpline::CubicSpline(const Dictionary& dict) : Kernel(dict, 2.0) {
+CubicSpline::CubicSpline(const Dictionary& dict) : Kernel(dict, keywords().read(dict), 2.0) {
     initialise();
 }
 

@@ -7,6 +7,7 @@ namespace mfdyn {
 class CubicSpline : public Kernel {
 public:
     explicit CubicSpline(const Dictionary& dict);
+    static KeywordSchema keywords() { return commonKeywords("cubicSpline"); }
 
     double shape(double u, int dim) const override;
     double shapeDerivative(double u, int dim) const override;

@@ -18,15 +18,17 @@
 
 namespace mfdyn {
 
-double Gaussian::readCutoff(const Dictionary& dict) {
-    const double a = dict.getOrDefault<double>("cutoff", 3.0);
-    if (!(a > 0.0) || !std::isfinite(a))
-        throw dict.error("cutoff",
-                         "expected a positive support radius in units of h, found " + std::to_string(a));
-    return a;
+KeywordSchema Gaussian::keywords() {
+    return commonKeywords("gaussian")
+        .scalar("cutoff", "-", "support radius in units of h: exp(-(r/h)^2) cut at r = cutoff h")
+        .greaterThan(0)
+        .orDefault(3.0);
 }
 
-Gaussian::Gaussian(const Dictionary& dict) : Kernel(dict, readCutoff(dict)), cutoff_(readCutoff(dict)) {
+Gaussian::Gaussian(const Dictionary& dict) : Gaussian(dict, keywords().read(dict)) {}
+
+Gaussian::Gaussian(const Dictionary& dict, const KeywordValues& values)
+    : Kernel(dict, values, values.scalar("cutoff")), cutoff_(values.scalar("cutoff")) {
     initialise();
 }
 

@@ -8,6 +8,7 @@ namespace mfdyn {
 class Gaussian : public Kernel {
 public:
     explicit Gaussian(const Dictionary& dict);
+    static KeywordSchema keywords();
 
     double shape(double u, int dim) const override;
     double shapeDerivative(double u, int dim) const override;
@@ -16,8 +17,8 @@ public:
     double cutoff() const { return cutoff_; }
 
 private:
-    // The constructor reads the cutoff before the base needs it as kappa.
-    static double readCutoff(const Dictionary& dict);
+    // The cutoff is read before the base needs it as kappa.
+    Gaussian(const Dictionary& dict, const KeywordValues& values);
 
     double cutoff_;
 };

@@ -33,16 +33,20 @@ double radialMoment(const Kernel& kernel, int dim, int p) {
 
 }  // namespace
 
-Kernel::Kernel(const Dictionary& dict, double standardKappa) : type_(dict.get<std::string>("type")) {
-    const auto convention = dict.getOrDefault<std::string>("hConvention", "standard");
-    if (convention == "standard")
-        kappa_ = standardKappa;
-    else if (convention == "supportRadius")
-        kappa_ = 1.0;
-    else
-        throw dict.error(
-            "hConvention",
-            "expected 'standard' (H = kappa h) or 'supportRadius' (H = h), found '" + convention + "'");
+KeywordSchema Kernel::commonKeywords(const std::string& type) {
+    return KeywordSchema(familyName, type)
+        .word("hConvention", {"standard", "supportRadius"},
+              "smoothing length convention: standard, H = kappa h (kappa per type), or supportRadius, H = h "
+              "(the note's)")
+        .orDefault("standard");
+}
+
+Kernel::Kernel(const Dictionary& dict, double standardKappa)
+    : Kernel(dict, commonKeywords(dict.get<std::string>("type")).read(dict), standardKappa) {}
+
+Kernel::Kernel(const Dictionary& dict, const KeywordValues& values, double standardKappa)
+    : type_(dict.get<std::string>("type")) {
+    kappa_ = values.word("hConvention") == "standard" ? standardKappa : 1.0;
 }
 
 int Kernel::index(int dim) {

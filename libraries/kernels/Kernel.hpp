@@ -36,10 +36,9 @@
 //     kernel { type gaussian; cutoff 3; }               // exp(-(r/h)^2) cut at 3h, renormalised
 //     kernel { type cubicSpline; hConvention supportRadius; }   // h = H as in the note
 //
-//     keyword      meaning                                        required  default
-//     type         kernel type (the list below)                   yes
-//     hConvention  standard (H = kappa h) | supportRadius (H = h)  no        standard
-//     cutoff       gaussian only: support radius in units of h    no        3
+// Keywords: every type has `hConvention` (commonKeywords); a type adds its own in its
+// `static KeywordSchema keywords()` (the gaussian's `cutoff`), listed by `-describe kernel` and in
+// doc/models/kernel/.
 //
 // Resolution matching (note 1.2): sigma^2 = integral |x|^2 W = (s_d h)^2; two kernels resolve
 // alike when their sigma agree, h2 = h1 s_d(1)/s_d(2) (matchedSmoothingLength).
@@ -60,6 +59,9 @@ public:
     static constexpr const char* familyName = "kernel";
     using Selector = Registry<Kernel, const Dictionary&>;
     static std::unique_ptr<Kernel> New(const Dictionary& dict) { return Selector::New(dict); }
+
+    // The keywords every kernel type has (hConvention): a type's keywords() starts from them.
+    static KeywordSchema commonKeywords(const std::string& type);
 
     // Cells of the evaluator table; a multiple of 6 so that knots at 1/2, 1/3, 2/3 are cell edges.
     static constexpr int tableCells = 6144;
@@ -107,6 +109,8 @@ public:
 protected:
     // Reads `type` and `hConvention`; `standardKappa` is H/h under the standard convention.
     Kernel(const Dictionary& dict, double standardKappa);
+    // The same with `values` read through the type's own schema (which includes commonKeywords).
+    Kernel(const Dictionary& dict, const KeywordValues& values, double standardKappa);
     // Computes c_d, moments and tables; called at the end of every concrete constructor, when the
     // shape is complete.
     void initialise();

@@ -16,7 +16,7 @@
 
 namespace mfdyn {
 
-Mollifier::Mollifier(const Dictionary& dict) : Kernel(dict, 1.0) {
+Mollifier::Mollifier(const Dictionary& dict) : Kernel(dict, keywords().read(dict), 1.0) {
     initialise();
 }
 

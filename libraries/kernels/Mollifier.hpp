@@ -8,6 +8,7 @@ namespace mfdyn {
 class Mollifier : public Kernel {
 public:
     explicit Mollifier(const Dictionary& dict);
+    static KeywordSchema keywords() { return commonKeywords("mollifier"); }
 
     double shape(double u, int dim) const override;
     double shapeDerivative(double u, int dim) const override;

@@ -11,7 +11,7 @@
 
 namespace mfdyn {
 
-QuinticSpline::QuinticSpline(const Dictionary& dict) : Kernel(dict, 3.0) {
+QuinticSpline::QuinticSpline(const Dictionary& dict) : Kernel(dict, keywords().read(dict), 3.0) {
     initialise();
 }
 

@@ -8,6 +8,7 @@ namespace mfdyn {
 class QuinticSpline : public Kernel {
 public:
     explicit QuinticSpline(const Dictionary& dict);
+    static KeywordSchema keywords() { return commonKeywords("quinticSpline"); }
 
     double shape(double u, int dim) const override;
     double shapeDerivative(double u, int dim) const override;

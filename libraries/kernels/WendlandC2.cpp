@@ -10,7 +10,7 @@
 
 namespace mfdyn {
 
-WendlandC2::WendlandC2(const Dictionary& dict) : Kernel(dict, 2.0) {
+WendlandC2::WendlandC2(const Dictionary& dict) : Kernel(dict, keywords().read(dict), 2.0) {
     initialise();
 }
 

@@ -7,6 +7,7 @@ namespace mfdyn {
 class WendlandC2 : public Kernel {
 public:
     explicit WendlandC2(const Dictionary& dict);
+    static KeywordSchema keywords() { return commonKeywords("wendlandC2"); }
 
     double shape(double u, int dim) const override;
     double shapeDerivative(double u, int dim) const override;

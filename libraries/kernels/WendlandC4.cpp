@@ -11,7 +11,7 @@
 
 namespace mfdyn {
 
-WendlandC4::WendlandC4(const Dictionary& dict) : Kernel(dict, 2.0) {
+WendlandC4::WendlandC4(const Dictionary& dict) : Kernel(dict, keywords().read(dict), 2.0) {
     initialise();
 }
 

@@ -7,6 +7,7 @@ namespace mfdyn {
 class WendlandC4 : public Kernel {
 public:
     explicit WendlandC4(const Dictionary& dict);
+    static KeywordSchema keywords() { return commonKeywords("wendlandC4"); }
 
     double shape(double u, int dim) const override;
     double shapeDerivative(double u, int dim) const override;

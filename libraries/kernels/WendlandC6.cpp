@@ -12,7 +12,7 @@
 
 namespace mfdyn {
 
-WendlandC6::WendlandC6(const Dictionary& dict) : Kernel(dict, 2.0) {
+WendlandC6::WendlandC6(const Dictionary& dict) : Kernel(dict, keywords().read(dict), 2.0) {
     initialise();
 }
 

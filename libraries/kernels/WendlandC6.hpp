@@ -7,6 +7,7 @@ namespace mfdyn {
 class WendlandC6 : public Kernel {
 public:
     explicit WendlandC6(const Dictionary& dict);
+    static KeywordSchema keywords() { return commonKeywords("wendlandC6"); }
 
     double shape(double u, int dim) const override;
     double shapeDerivative(double u, int dim) const override;

@@ -9,20 +9,30 @@
 // Us = c0 + S0 up (see MieGruneisen.cpp), so the model is accurate for moderate compression
 // (mu < ~0.3). The one polynomial is used in tension as printed (no separate tension branch, no
 // cut-off); B0 plays the role of a Grueneisen parameter with Gamma rho = B0 rho0.
-//
-//     keyword  meaning                                   unit     required
-//     rho0     reference density                         kg/m^3   yes (here or in the material)
-//     c0       bulk sound speed                          m/s      yes (here or in the material)
-//     S0       Us-up slope                               -        yes (here or in the material)
-//     B0       energy coefficient (Grueneisen-like)      -        yes (here or in the material)
 #include "materials/equationOfState/CubicPolynomial.hpp"
 
 namespace mfdyn {
 
-CubicPolynomial::CubicPolynomial(const Dictionary& dict)
-    : EquationOfState(dict, positiveParameter(dict, "rho0")), B0_(parameter(dict, "B0")) {
-    const double c0 = positiveParameter(dict, "c0");
-    const double sm1 = parameter(dict, "S0") - 1.0;
+KeywordSchema CubicPolynomial::keywords() {
+    return KeywordSchema(familyName, "cubicPolynomial")
+        .scalar("rho0", "kg/m^3", "reference density")
+        .greaterThan(0)
+        .orEnclosing()
+        .scalar("c0", "m/s", "bulk sound speed")
+        .greaterThan(0)
+        .orEnclosing()
+        .scalar("S0", "-", "slope of the linear Us-up Hugoniot")
+        .orEnclosing()
+        .scalar("B0", "-", "energy coefficient (Grueneisen-like, Gamma rho = B0 rho0)")
+        .orEnclosing();
+}
+
+CubicPolynomial::CubicPolynomial(const Dictionary& dict) : EquationOfState(dict) {
+    const KeywordValues v = keywords().read(dict);
+    setReferenceDensity(v.scalar("rho0"));
+    B0_ = v.scalar("B0");
+    const double c0 = v.scalar("c0");
+    const double sm1 = v.scalar("S0") - 1.0;
     K1_ = referenceDensity() * c0 * c0;
     K2_ = K1_ * (1.0 + 2.0 * sm1);
     K3_ = K1_ * (2.0 * sm1 + 3.0 * sm1 * sm1);
@@ -53,6 +63,6 @@ void CubicPolynomial::evaluate(std::size_t n, const double* rho, const double* e
 }
 
 MFDYN_REGISTER(EquationOfState, CubicPolynomial, "cubicPolynomial",
-               "cubic P = K1 mu + K2 mu^2 + K3 mu^3 + B0 rho0 e (Zisis 5.4-5.5); keywords rho0, c0, S0, B0");
+               "cubic P = K1 mu + K2 mu^2 + K3 mu^3 + B0 rho0 e (Zisis 5.4-5.5)");
 
 }  // namespace mfdyn

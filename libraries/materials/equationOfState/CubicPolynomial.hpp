@@ -8,6 +8,7 @@ namespace mfdyn {
 class CubicPolynomial final : public EquationOfState {
 public:
     explicit CubicPolynomial(const Dictionary& dict);
+    static KeywordSchema keywords();
 
     double pressure(double rho, double e) const override;
     double soundSpeedSquared(double rho, double e) const override;
@@ -17,7 +18,7 @@ public:
     void state(double rho, double e, double& p, double& c2) const;
 
 private:
-    double B0_, K1_ = 0.0, K2_ = 0.0, K3_ = 0.0;
+    double B0_ = 0.0, K1_ = 0.0, K2_ = 0.0, K3_ = 0.0;
 };
 
 }  // namespace mfdyn

@@ -37,10 +37,10 @@
 // An entry in the equationOfState dictionary wins over one in the material. Only one level up is
 // searched: a material must not pick up a neighbour's or the file's constants by accident.
 //
-// Usage (keywords common to all types; each model lists its own in its .cpp):
-//
-//     keyword  meaning                                required  default
-//     type     equation of state type (the list)      yes
+// Keywords: `type` selects the model; each model declares its own in a keyword schema,
+// `static KeywordSchema keywords()` (core/KeywordSchema.hpp), and reads its dictionary through
+// it. Parameters marked orEnclosing may be given in the material instead (see above); the schema
+// is listed by `-describe equationOfState` and in doc/models/equationOfState/.
 //
 // Evaluation. pressure() and soundSpeedSquared() are virtual, for set-up, tests and utilities.
 // Particle loops call evaluate() once per block: one virtual call per block, the models' loops

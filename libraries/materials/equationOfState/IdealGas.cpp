@@ -4,17 +4,26 @@
 //
 // (c^2 from dP/drho|_e = (gamma - 1) e and dP/de|_rho = (gamma - 1) rho.) Valid for e >= 0; a
 // negative e gives P < 0 and c^2 < 0, which the solver reports.
-//
-//     keyword  meaning                                   unit     required  default
-//     gamma    ratio of specific heats, > 1              -        yes
-//     rho0     reference density (initial conditions)    kg/m^3   no        0 (none)
 #include "materials/equationOfState/IdealGas.hpp"
 
 namespace mfdyn {
 
-IdealGas::IdealGas(const Dictionary& dict)
-    : EquationOfState(dict, parameterOrDefault(dict, "rho0", 0.0)),
-      gamma_(checkAbove(dict, "gamma", parameter(dict, "gamma"), 1.0)) {}
+KeywordSchema IdealGas::keywords() {
+    return KeywordSchema(familyName, "idealGas")
+        .scalar("gamma", "-", "ratio of specific heats")
+        .greaterThan(1)
+        .orEnclosing()
+        .scalar("rho0", "kg/m^3", "reference density, for initial conditions (0: none)")
+        .atLeast(0)
+        .orDefault(0)
+        .orEnclosing();
+}
+
+IdealGas::IdealGas(const Dictionary& dict) : EquationOfState(dict) {
+    const KeywordValues v = keywords().read(dict);
+    gamma_ = v.scalar("gamma");
+    setReferenceDensity(v.scalar("rho0"));
+}
 
 void IdealGas::state(double rho, double e, double& p, double& c2) const {
     p = (gamma_ - 1.0) * rho * e;
@@ -33,6 +42,6 @@ void IdealGas::evaluate(std::size_t n, const double* rho, const double* e, doubl
     evaluateBlock(*this, n, rho, e, p, c);
 }
 
-MFDYN_REGISTER(EquationOfState, IdealGas, "idealGas", "ideal gas P = (gamma - 1) rho e; keyword gamma");
+MFDYN_REGISTER(EquationOfState, IdealGas, "idealGas", "ideal gas P = (gamma - 1) rho e");
 
 }  // namespace mfdyn

@@ -7,6 +7,7 @@ namespace mfdyn {
 class IdealGas final : public EquationOfState {
 public:
     explicit IdealGas(const Dictionary& dict);
+    static KeywordSchema keywords();
 
     double pressure(double rho, double e) const override;
     double soundSpeedSquared(double rho, double e) const override;
@@ -16,7 +17,7 @@ public:
     void state(double rho, double e, double& p, double& c2) const;
 
 private:
-    double gamma_;
+    double gamma_ = 0.0;
 };
 
 }  // namespace mfdyn

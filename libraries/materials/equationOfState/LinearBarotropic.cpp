@@ -6,16 +6,25 @@
 // P does not depend on e, so no energy equation is needed. Valid for small density changes (|rho/rho0
 // - 1| << 1) or as the isothermal model problem of the shock-bar tests (note 8.2); it allows any
 // tension.
-//
-//     keyword  meaning                           unit     required
-//     rho0     reference density                 kg/m^3   yes (here or in the material)
-//     c0       sound speed                       m/s      yes (here or in the material)
 #include "materials/equationOfState/LinearBarotropic.hpp"
 
 namespace mfdyn {
 
-LinearBarotropic::LinearBarotropic(const Dictionary& dict)
-    : EquationOfState(dict, positiveParameter(dict, "rho0")), c0_(positiveParameter(dict, "c0")) {}
+KeywordSchema LinearBarotropic::keywords() {
+    return KeywordSchema(familyName, "linearBarotropic")
+        .scalar("rho0", "kg/m^3", "reference density")
+        .greaterThan(0)
+        .orEnclosing()
+        .scalar("c0", "m/s", "sound speed")
+        .greaterThan(0)
+        .orEnclosing();
+}
+
+LinearBarotropic::LinearBarotropic(const Dictionary& dict) : EquationOfState(dict) {
+    const KeywordValues v = keywords().read(dict);
+    setReferenceDensity(v.scalar("rho0"));
+    c0_ = v.scalar("c0");
+}
 
 void LinearBarotropic::state(double rho, double, double& p, double& c2) const {
     c2 = c0_ * c0_;
@@ -35,7 +44,6 @@ void LinearBarotropic::evaluate(std::size_t n, const double* rho, const double* 
     evaluateBlock(*this, n, rho, e, p, c);
 }
 
-MFDYN_REGISTER(EquationOfState, LinearBarotropic, "linearBarotropic",
-               "isothermal P = c0^2 (rho - rho0); keywords rho0, c0");
+MFDYN_REGISTER(EquationOfState, LinearBarotropic, "linearBarotropic", "isothermal P = c0^2 (rho - rho0)");
 
 }  // namespace mfdyn

@@ -7,6 +7,7 @@ namespace mfdyn {
 class LinearBarotropic final : public EquationOfState {
 public:
     explicit LinearBarotropic(const Dictionary& dict);
+    static KeywordSchema keywords();
 
     double pressure(double rho, double e) const override;
     double soundSpeedSquared(double rho, double e) const override;
@@ -17,7 +18,7 @@ public:
     void state(double rho, double e, double& p, double& c2) const;
 
 private:
-    double c0_;
+    double c0_ = 0.0;
 };
 
 }  // namespace mfdyn

@@ -39,15 +39,6 @@
 // Limits: no spall or tension cut-off in the thesis; `minimumPressure` clamps P from below
 // (P = max(P, pMin)) and leaves c^2 as the uncut value, since the cut-off models failed material
 // that the time step must still resolve, not a softer one. c^2 can be negative in strong tension.
-//
-//     keyword          meaning                                  unit     required  default
-//     rho0             reference density                        kg/m^3   yes (here or in the material)
-//     c0               bulk sound speed (Us at up = 0)           m/s      yes (here or in the material)
-//     s                Us-up slope (the note's xi)              -        yes (here or in the material)
-//     gamma0           Grueneisen parameter                     -        yes (here or in the material)
-//     hugoniot         cubic | linearUsUp                       -        no        cubic
-//     gruneisen        constant | constantRhoGamma              -        no        constant
-//     minimumPressure  tension cut-off pMin (negative)          Pa       no        none (-infinity)
 #include "materials/equationOfState/MieGruneisen.hpp"
 
 #include <algorithm>
@@ -55,30 +46,40 @@
 
 namespace mfdyn {
 
-MieGruneisen::MieGruneisen(const Dictionary& dict)
-    : EquationOfState(dict, positiveParameter(dict, "rho0")),
-      c0_(positiveParameter(dict, "c0")),
-      s_(parameter(dict, "s")),
-      gamma0_(parameter(dict, "gamma0")) {
-    const auto form = dict.getOrDefault<std::string>("hugoniot", "cubic");
-    if (form == "cubic")
-        hugoniot_ = Hugoniot::cubic;
-    else if (form == "linearUsUp")
-        hugoniot_ = Hugoniot::linearUsUp;
-    else
-        throw dict.error("hugoniot",
-                         "expected 'cubic' (Zisis 2017 Eq. 6.11) or 'linearUsUp' (the exact "
-                         "Hugoniot of Us = c0 + s up), found '" +
-                             form + "'");
-    const auto gruneisen = dict.getOrDefault<std::string>("gruneisen", "constant");
-    if (gruneisen != "constant" && gruneisen != "constantRhoGamma")
-        throw dict.error("gruneisen", "expected 'constant' (Zisis 2017) or 'constantRhoGamma' (Gamma rho = Gamma0 rho0), "
-                                      "found '" + gruneisen + "'");
-    constantRhoGamma_ = gruneisen == "constantRhoGamma";
-    if (auto pMin = optionalParameter(dict, "minimumPressure")) {
-        if (!(*pMin <= 0.0)) throw parameterError(dict, "minimumPressure", "expected a tension (<= 0) in Pa");
-        pMin_ = *pMin;
-    }
+KeywordSchema MieGruneisen::keywords() {
+    return KeywordSchema(familyName, "mieGruneisen")
+        .scalar("rho0", "kg/m^3", "reference density")
+        .greaterThan(0)
+        .orEnclosing()
+        .scalar("c0", "m/s", "bulk sound speed, Us at up = 0")
+        .greaterThan(0)
+        .orEnclosing()
+        .scalar("s", "-", "slope of the linear Us-up Hugoniot (the note's xi)")
+        .orEnclosing()
+        .scalar("gamma0", "-", "Grueneisen parameter at rho0")
+        .orEnclosing()
+        .word("hugoniot", {"cubic", "linearUsUp"},
+              "reference curve in compression: the cubic of Zisis 2017 Eq. 6.11, or the exact Hugoniot of Us "
+              "= c0 + s up")
+        .orDefault("cubic")
+        .word("gruneisen", {"constant", "constantRhoGamma"},
+              "Gamma constant (Zisis 2017), or Gamma rho = Gamma0 rho0 (hydrocodes)")
+        .orDefault("constant")
+        .scalar("minimumPressure", "Pa", "tension cut-off pMin: P = max(P, pMin), c^2 uncut")
+        .atMost(0)
+        .optional()
+        .orEnclosing();
+}
+
+MieGruneisen::MieGruneisen(const Dictionary& dict) : EquationOfState(dict) {
+    const KeywordValues v = keywords().read(dict);
+    setReferenceDensity(v.scalar("rho0"));
+    c0_ = v.scalar("c0");
+    s_ = v.scalar("s");
+    gamma0_ = v.scalar("gamma0");
+    hugoniot_ = v.word("hugoniot") == "cubic" ? Hugoniot::cubic : Hugoniot::linearUsUp;
+    constantRhoGamma_ = v.word("gruneisen") == "constantRhoGamma";
+    if (auto pMin = v.optionalScalar("minimumPressure")) pMin_ = *pMin;
     const double sm1 = s_ - 1.0;
     A_ = referenceDensity() * c0_ * c0_;
     B_ = A_ * (1.0 + 2.0 * sm1);
@@ -134,6 +135,6 @@ void MieGruneisen::evaluate(std::size_t n, const double* rho, const double* e, d
 }
 
 MFDYN_REGISTER(EquationOfState, MieGruneisen, "mieGruneisen",
-               "Mie-Grueneisen on a linear Us-up Hugoniot (Zisis 6.10-6.13); keywords rho0, c0, s, gamma0");
+               "Mie-Grueneisen on a linear Us-up Hugoniot (Zisis 6.10-6.13)");
 
 }  // namespace mfdyn

@@ -13,6 +13,7 @@ public:
     enum class Hugoniot { cubic, linearUsUp };
 
     explicit MieGruneisen(const Dictionary& dict);
+    static KeywordSchema keywords();
 
     double pressure(double rho, double e) const override;
     double soundSpeedSquared(double rho, double e) const override;
@@ -25,7 +26,7 @@ public:
     double minimumPressure() const { return pMin_; }
 
 private:
-    double c0_, s_, gamma0_;
+    double c0_ = 0.0, s_ = 0.0, gamma0_ = 0.0;
     Hugoniot hugoniot_ = Hugoniot::cubic;
     bool constantRhoGamma_ = false;
     double pMin_ = -std::numeric_limits<double>::infinity();

@@ -5,21 +5,32 @@
 //
 // Barotropic (an isentrope of the ideal gas when gamma is its ratio of specific heats); P > 0 for
 // every rho > 0, so the reference pressure K rho0^gamma is not zero.
-//
-//     keyword  meaning                                   unit              required  default
-//     K        polytropic constant, > 0                  Pa (m^3/kg)^gamma yes
-//     gamma    exponent, > 1                             -                 yes
-//     rho0     reference density (initial conditions)    kg/m^3            no        0 (none)
 #include "materials/equationOfState/Polytropic.hpp"
 
 #include <cmath>
 
 namespace mfdyn {
 
-Polytropic::Polytropic(const Dictionary& dict)
-    : EquationOfState(dict, parameterOrDefault(dict, "rho0", 0.0)),
-      K_(positiveParameter(dict, "K")),
-      gamma_(checkAbove(dict, "gamma", parameter(dict, "gamma"), 1.0)) {}
+KeywordSchema Polytropic::keywords() {
+    return KeywordSchema(familyName, "polytropic")
+        .scalar("K", "Pa (m^3/kg)^gamma", "polytropic constant")
+        .greaterThan(0)
+        .orEnclosing()
+        .scalar("gamma", "-", "polytropic exponent")
+        .greaterThan(1)
+        .orEnclosing()
+        .scalar("rho0", "kg/m^3", "reference density, for initial conditions (0: none)")
+        .atLeast(0)
+        .orDefault(0)
+        .orEnclosing();
+}
+
+Polytropic::Polytropic(const Dictionary& dict) : EquationOfState(dict) {
+    const KeywordValues v = keywords().read(dict);
+    K_ = v.scalar("K");
+    gamma_ = v.scalar("gamma");
+    setReferenceDensity(v.scalar("rho0"));
+}
 
 void Polytropic::state(double rho, double, double& p, double& c2) const {
     const double r = K_ * std::pow(rho, gamma_ - 1.0);
@@ -39,6 +50,6 @@ void Polytropic::evaluate(std::size_t n, const double* rho, const double* e, dou
     evaluateBlock(*this, n, rho, e, p, c);
 }
 
-MFDYN_REGISTER(EquationOfState, Polytropic, "polytropic", "polytrope P = K rho^gamma; keywords K, gamma");
+MFDYN_REGISTER(EquationOfState, Polytropic, "polytropic", "polytrope P = K rho^gamma");
 
 }  // namespace mfdyn

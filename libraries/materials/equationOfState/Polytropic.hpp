@@ -7,6 +7,7 @@ namespace mfdyn {
 class Polytropic final : public EquationOfState {
 public:
     explicit Polytropic(const Dictionary& dict);
+    static KeywordSchema keywords();
 
     double pressure(double rho, double e) const override;
     double soundSpeedSquared(double rho, double e) const override;
@@ -17,7 +18,7 @@ public:
     void state(double rho, double e, double& p, double& c2) const;
 
 private:
-    double K_, gamma_;
+    double K_ = 0.0, gamma_ = 0.0;
 };
 
 }  // namespace mfdyn

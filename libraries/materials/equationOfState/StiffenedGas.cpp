@@ -6,19 +6,30 @@
 // (dP/drho|_e = (gamma - 1) e, dP/de|_rho = (gamma - 1) rho, and (gamma - 1) rho e = P + gamma pRef.)
 // pRef = 0 is the ideal gas; water-like liquids take gamma ~ 4.4, pRef ~ 6e8 Pa. c^2 > 0 needs
 // P > -pRef.
-//
-//     keyword  meaning                                   unit     required  default
-//     gamma    ratio of specific heats, > 1              -        yes
-//     pRef     stiffening pressure, >= 0                 Pa       yes
-//     rho0     reference density (initial conditions)    kg/m^3   no        0 (none)
 #include "materials/equationOfState/StiffenedGas.hpp"
 
 namespace mfdyn {
 
-StiffenedGas::StiffenedGas(const Dictionary& dict)
-    : EquationOfState(dict, parameterOrDefault(dict, "rho0", 0.0)),
-      gamma_(checkAbove(dict, "gamma", parameter(dict, "gamma"), 1.0)),
-      pRef_(positiveParameter(dict, "pRef", true)) {}
+KeywordSchema StiffenedGas::keywords() {
+    return KeywordSchema(familyName, "stiffenedGas")
+        .scalar("gamma", "-", "ratio of specific heats")
+        .greaterThan(1)
+        .orEnclosing()
+        .scalar("pRef", "Pa", "stiffening pressure (0: the ideal gas)")
+        .atLeast(0)
+        .orEnclosing()
+        .scalar("rho0", "kg/m^3", "reference density, for initial conditions (0: none)")
+        .atLeast(0)
+        .orDefault(0)
+        .orEnclosing();
+}
+
+StiffenedGas::StiffenedGas(const Dictionary& dict) : EquationOfState(dict) {
+    const KeywordValues v = keywords().read(dict);
+    gamma_ = v.scalar("gamma");
+    pRef_ = v.scalar("pRef");
+    setReferenceDensity(v.scalar("rho0"));
+}
 
 void StiffenedGas::state(double rho, double e, double& p, double& c2) const {
     p = (gamma_ - 1.0) * rho * e - gamma_ * pRef_;
@@ -38,6 +49,6 @@ void StiffenedGas::evaluate(std::size_t n, const double* rho, const double* e, d
 }
 
 MFDYN_REGISTER(EquationOfState, StiffenedGas, "stiffenedGas",
-               "stiffened gas P = (gamma - 1) rho e - gamma pRef; keywords gamma, pRef");
+               "stiffened gas P = (gamma - 1) rho e - gamma pRef");
 
 }  // namespace mfdyn

@@ -6,28 +6,42 @@
 // with B given, or from the sound speed at rest, B = rho0 c0^2 / gamma (the thesis gives no B).
 // Barotropic: no energy equation. Weakly compressible liquids (gamma = 7 for water); in tension P
 // tends to -B as rho -> 0.
-//
-//     keyword  meaning                                      unit     required  default
-//     rho0     reference density                            kg/m^3   yes (here or in the material)
-//     B        pressure constant; or                        Pa       one of B, c0
-//     c0       sound speed at rho0, B = rho0 c0^2/gamma     m/s      one of B, c0
-//     gamma    exponent, > 1                                -        no        7
 #include "materials/equationOfState/Tait.hpp"
 
 #include <cmath>
 
 namespace mfdyn {
 
-Tait::Tait(const Dictionary& dict)
-    : EquationOfState(dict, positiveParameter(dict, "rho0")),
-      gamma_(checkAbove(dict, "gamma", parameterOrDefault(dict, "gamma", 7.0), 1.0)) {
-    const auto B = optionalParameter(dict, "B");
-    const auto c0 = optionalParameter(dict, "c0");
-    if (B && c0) throw parameterError(dict, "B", "give either B or c0 (B = rho0 c0^2/gamma), not both");
+KeywordSchema Tait::keywords() {
+    return KeywordSchema(familyName, "tait")
+        .scalar("rho0", "kg/m^3", "reference density")
+        .greaterThan(0)
+        .orEnclosing()
+        .scalar("B", "Pa", "pressure constant; give B or c0, not both")
+        .greaterThan(0)
+        .optional()
+        .orEnclosing()
+        .scalar("c0", "m/s", "sound speed at rho0, giving B = rho0 c0^2/gamma; give B or c0, not both")
+        .greaterThan(0)
+        .optional()
+        .orEnclosing()
+        .scalar("gamma", "-", "exponent (7 for water)")
+        .greaterThan(1)
+        .orDefault(7.0)
+        .orEnclosing();
+}
+
+Tait::Tait(const Dictionary& dict) : EquationOfState(dict) {
+    const KeywordValues v = keywords().read(dict);
+    setReferenceDensity(v.scalar("rho0"));
+    gamma_ = v.scalar("gamma");
+    const auto B = v.optionalScalar("B");
+    const auto c0 = v.optionalScalar("c0");
+    if (B && c0) throw v.error("B", "give either B or c0 (B = rho0 c0^2/gamma), not both");
     if (B)
-        B_ = positiveParameter(dict, "B");
+        B_ = *B;
     else if (c0)
-        B_ = referenceDensity() * std::pow(positiveParameter(dict, "c0"), 2) / gamma_;
+        B_ = referenceDensity() * *c0 * *c0 / gamma_;
     else
         throw InputError(dict.where(), dict.scope(),
                          "missing keyword 'B' or 'c0' (a real number; B = rho0 c0^2/gamma), looked for in '" +
@@ -55,7 +69,6 @@ void Tait::evaluate(std::size_t n, const double* rho, const double* e, double* p
     evaluateBlock(*this, n, rho, e, p, c);
 }
 
-MFDYN_REGISTER(EquationOfState, Tait, "tait",
-               "Tait P = B ((rho/rho0)^gamma - 1); keywords rho0, B or c0, gamma (default 7)");
+MFDYN_REGISTER(EquationOfState, Tait, "tait", "Tait P = B ((rho/rho0)^gamma - 1)");
 
 }  // namespace mfdyn

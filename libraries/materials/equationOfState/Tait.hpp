@@ -7,6 +7,7 @@ namespace mfdyn {
 class Tait final : public EquationOfState {
 public:
     explicit Tait(const Dictionary& dict);
+    static KeywordSchema keywords();
 
     double pressure(double rho, double e) const override;
     double soundSpeedSquared(double rho, double e) const override;
@@ -17,7 +18,7 @@ public:
     void state(double rho, double e, double& p, double& c2) const;
 
 private:
-    double gamma_, B_ = 0.0;
+    double gamma_ = 0.0, B_ = 0.0;
 };
 
 }  // namespace mfdyn

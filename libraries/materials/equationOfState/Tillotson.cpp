@@ -24,17 +24,6 @@
 // Range: designed for hypervelocity impact (shock pressures of tens to hundreds of GPa and
 // vaporisation); it has no phase transitions and in cold tension P_c is unbounded below, so
 // `minimumPressure` offers the same cut-off as mieGruneisen (P = max(P, pMin), c^2 uncut).
-//
-//     keyword          meaning                                   unit     required  default
-//     rho0             reference density                         kg/m^3   yes (here or in the material)
-//     A                bulk-modulus-like coefficient             Pa       yes
-//     B                second-order coefficient                  Pa       yes
-//     a, b             Tillotson constants (a + b ~ Gruneisen)   -        yes
-//     alpha, beta      expanded-branch decay constants           -        yes
-//     E0               reference specific energy                 J/kg     yes
-//     Eiv              energy of incipient vaporisation          J/kg     yes
-//     Ecv              energy of complete vaporisation, > Eiv    J/kg     yes
-//     minimumPressure  tension cut-off pMin (negative)           Pa       no        none
 #include "materials/equationOfState/Tillotson.hpp"
 
 #include <algorithm>
@@ -42,21 +31,56 @@
 
 namespace mfdyn {
 
-Tillotson::Tillotson(const Dictionary& dict)
-    : EquationOfState(dict, positiveParameter(dict, "rho0")),
-      A_(positiveParameter(dict, "A")),
-      B_(parameter(dict, "B")),
-      a_(parameter(dict, "a")),
-      b_(parameter(dict, "b")),
-      alpha_(positiveParameter(dict, "alpha", true)),
-      beta_(positiveParameter(dict, "beta", true)),
-      E0_(positiveParameter(dict, "E0")),
-      Eiv_(positiveParameter(dict, "Eiv", true)),
-      Ecv_(checkAbove(dict, "Ecv", parameter(dict, "Ecv"), Eiv_)) {
-    if (auto pMin = optionalParameter(dict, "minimumPressure")) {
-        if (!(*pMin <= 0.0)) throw parameterError(dict, "minimumPressure", "expected a tension (<= 0) in Pa");
-        pMin_ = *pMin;
-    }
+KeywordSchema Tillotson::keywords() {
+    return KeywordSchema(familyName, "tillotson")
+        .scalar("rho0", "kg/m^3", "reference density")
+        .greaterThan(0)
+        .orEnclosing()
+        .scalar("A", "Pa", "bulk-modulus-like coefficient")
+        .greaterThan(0)
+        .orEnclosing()
+        .scalar("B", "Pa", "second-order coefficient")
+        .orEnclosing()
+        .scalar("a", "-", "Tillotson constant a (a + b ~ Grueneisen parameter)")
+        .orEnclosing()
+        .scalar("b", "-", "Tillotson constant b")
+        .orEnclosing()
+        .scalar("alpha", "-", "decay constant of the expanded branch, exp(-alpha x^2)")
+        .atLeast(0)
+        .orEnclosing()
+        .scalar("beta", "-", "decay constant of the expanded branch, exp(-beta x)")
+        .atLeast(0)
+        .orEnclosing()
+        .scalar("E0", "J/kg", "reference specific energy")
+        .greaterThan(0)
+        .orEnclosing()
+        .scalar("Eiv", "J/kg", "specific energy of incipient vaporisation")
+        .atLeast(0)
+        .orEnclosing()
+        .scalar("Ecv", "J/kg", "specific energy of complete vaporisation, > Eiv")
+        .orEnclosing()
+        .scalar("minimumPressure", "Pa", "tension cut-off pMin: P = max(P, pMin), c^2 uncut")
+        .atMost(0)
+        .optional()
+        .orEnclosing();
+}
+
+Tillotson::Tillotson(const Dictionary& dict) : EquationOfState(dict) {
+    const KeywordValues v = keywords().read(dict);
+    setReferenceDensity(v.scalar("rho0"));
+    A_ = v.scalar("A");
+    B_ = v.scalar("B");
+    a_ = v.scalar("a");
+    b_ = v.scalar("b");
+    alpha_ = v.scalar("alpha");
+    beta_ = v.scalar("beta");
+    E0_ = v.scalar("E0");
+    Eiv_ = v.scalar("Eiv");
+    Ecv_ = v.scalar("Ecv");
+    if (!(Ecv_ > Eiv_))
+        throw v.error("Ecv", "expected a real number greater than Eiv = " + formatKeywordNumber(Eiv_) +
+                                 ", found " + formatKeywordNumber(Ecv_));
+    if (auto pMin = v.optionalScalar("minimumPressure")) pMin_ = *pMin;
 }
 
 void Tillotson::compressed(double rho, double e, double& p, double& pRho, double& pE) const {
@@ -123,8 +147,6 @@ void Tillotson::evaluate(std::size_t n, const double* rho, const double* e, doub
     evaluateBlock(*this, n, rho, e, p, c);
 }
 
-MFDYN_REGISTER(EquationOfState, Tillotson, "tillotson",
-               "Tillotson 1962 (compressed, expanded, blended); keywords rho0, A, B, a, b, alpha, beta, E0, "
-               "Eiv, Ecv");
+MFDYN_REGISTER(EquationOfState, Tillotson, "tillotson", "Tillotson 1962 (compressed, expanded, blended)");
 
 }  // namespace mfdyn

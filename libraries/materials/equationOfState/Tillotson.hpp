@@ -9,6 +9,7 @@ namespace mfdyn {
 class Tillotson final : public EquationOfState {
 public:
     explicit Tillotson(const Dictionary& dict);
+    static KeywordSchema keywords();
 
     double pressure(double rho, double e) const override;
     double soundSpeedSquared(double rho, double e) const override;
@@ -26,7 +27,8 @@ public:
     double energyCompleteVaporisation() const { return Ecv_; }
 
 private:
-    double A_, B_, a_, b_, alpha_, beta_, E0_, Eiv_, Ecv_;
+    double A_ = 0.0, B_ = 0.0, a_ = 0.0, b_ = 0.0, alpha_ = 0.0, beta_ = 0.0, E0_ = 0.0, Eiv_ = 0.0,
+           Ecv_ = 0.0;
     double pMin_ = -std::numeric_limits<double>::infinity();
 };
 

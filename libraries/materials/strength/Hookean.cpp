@@ -20,32 +20,37 @@
 
 namespace mfdyn {
 
-namespace {
+template <int Dim>
+KeywordSchema Hookean<Dim>::keywords() {
+    return KeywordSchema(Strength<Dim>::familyName, "hookean")
+        .scalar("shearModulus", "Pa", "shear modulus G")
+        .greaterThan(0)
+        .orEnclosing()
+        .scalar("shearFactor", "-",
+                "factor of G in the Jaumann law: 2 (standard) or 1 (thesis Eq. 6.7 as printed)")
+        .atLeast(1)
+        .atMost(2)
+        .orDefault(2.0)
+        .orEnclosing()
+        .word("deviator", {"dimension", "three"},
+              "trace weight of the deviator: 1/d (the thesis) or 1/3 (plane strain in 2D, uniaxial strain in "
+              "1D)")
+        .orDefault("dimension")
+        .orEnclosing();
+}
 
 template <int Dim>
-const typename Strength<Dim>::Keyword shearModulusKey{"shearModulus", "Pa", "shear modulus G",
-                                                      std::nullopt,   0.0,  true};
-template <int Dim>
-const typename Strength<Dim>::Keyword shearFactorKey{
-    "shearFactor",
-    "-",
-    "factor of G in the Jaumann law: 2 (standard) or 1 (thesis Eq. 6.7 as printed)",
-    2.0,
-    1.0,
-    false,
-    2.0};
-
-}  // namespace
+Hookean<Dim>::Hookean(const Dictionary& dict) : Hookean(dict, keywords().read(dict)) {}
 
 template <int Dim>
-Hookean<Dim>::Hookean(const Dictionary& dict) : Strength<Dim>(dict) {
-    this->shearModulus_ = this->read(dict, shearModulusKey<Dim>);
-    const double factor = this->read(dict, shearFactorKey<Dim>);
+Hookean<Dim>::Hookean(const Dictionary& dict, const KeywordValues& v) : Strength<Dim>(dict) {
+    this->shearModulus_ = v.scalar("shearModulus");
+    const double factor = v.scalar("shearFactor");
     if (factor != 1.0 && factor != 2.0)
-        throw dict.error("shearFactor",
-                         "expected 2 (standard) or 1 (thesis Eq. 6.7), found " + this->formatNumber(factor));
+        throw v.error("shearFactor",
+                      "expected 2 (standard) or 1 (thesis Eq. 6.7), found " + this->formatNumber(factor));
     twoMu_ = factor * this->shearModulus_;
-    if (this->readWord(dict, "deviator", "dimension", {"dimension", "three"}) == "three") {
+    if (v.word("deviator") == "three") {
         this->deviatorWeight_ = 1.0 / 3.0;
         this->impliedComponents_ = 3 - Dim;
     } else {
@@ -77,11 +82,6 @@ void Hookean<Dim>::returnToYieldSurface(const Fields& f, double) const {
 template <int Dim>
 double Hookean<Dim>::yieldStress(double, double, double) const {
     return std::numeric_limits<double>::infinity();
-}
-
-template <int Dim>
-std::vector<typename Strength<Dim>::Keyword> Hookean<Dim>::keywords() const {
-    return {shearModulusKey<Dim>, shearFactorKey<Dim>};
 }
 
 template class Hookean<1>;

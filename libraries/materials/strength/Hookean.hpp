@@ -19,20 +19,23 @@ template <int Dim>
 class Hookean : public Strength<Dim> {
 public:
     using typename Strength<Dim>::Fields;
-    using typename Strength<Dim>::Keyword;
 
     explicit Hookean(const Dictionary& dict);
+    static KeywordSchema keywords();
 
     void update(const Fields& fields, double dt) const override;
     void stressRate(const Fields& fields) const override;
     void returnToYieldSurface(const Fields& fields, double dt) const override;
     double yieldStress(double plasticStrain, double strainRate, double temperature) const override;
-    std::vector<typename Strength<Dim>::Keyword> keywords() const override;
 
     // 2mu, the factor of the deviatoric strain rate (2G unless shearFactor 1).
     double twoMu() const { return twoMu_; }
 
 protected:
+    // For laws built on this one (vonMises, johnsonCook): the values read through their schema,
+    // which appends to this one's.
+    Hookean(const Dictionary& dict, const KeywordValues& values);
+
     // W tau - tau W + 2mu (D - alpha tr(D) I).
     SymmTensor<Dim> jaumannRate(const SymmTensor<Dim>& tau, const Tensor<Dim>& L) const {
         const Tensor<Dim> t = tau.full();

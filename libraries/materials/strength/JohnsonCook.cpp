@@ -29,50 +29,66 @@
 
 namespace mfdyn {
 
-namespace {
+template <int Dim>
+KeywordSchema JohnsonCook<Dim>::keywords() {
+    return Hookean<Dim>::keywords()
+        .rename(Strength<Dim>::familyName, "johnsonCook")
+        .scalar("A", "Pa", "Johnson-Cook yield stress A")
+        .atLeast(0)
+        .orEnclosing()
+        .scalar("B", "Pa", "Johnson-Cook hardening coefficient B")
+        .atLeast(0)
+        .orEnclosing()
+        .scalar("n", "-", "Johnson-Cook hardening exponent n")
+        .greaterThan(0)
+        .orEnclosing()
+        .scalar("C", "-", "Johnson-Cook strain-rate coefficient C")
+        .atLeast(0)
+        .orEnclosing()
+        .scalar("m", "-", "Johnson-Cook thermal-softening exponent m")
+        .greaterThan(0)
+        .orEnclosing()
+        .scalar("epsilonDot0", "1/s", "reference strain rate")
+        .greaterThan(0)
+        .orDefault(1.0)
+        .orEnclosing()
+        .scalar("Troom", "K", "room temperature")
+        .greaterThan(0)
+        .orDefault(293.15)
+        .orEnclosing()
+        .scalar("Tmelt", "K", "melting temperature, > Troom")
+        .greaterThan(0)
+        .orEnclosing()
+        .scalar("specificHeat", "J/kg/K", "specific heat c_v")
+        .greaterThan(0)
+        .orEnclosing()
+        .scalar("taylorQuinney", "-",
+                "Taylor-Quinney coefficient beta, the fraction of plastic work turned to heat")
+        .atLeast(0)
+        .atMost(1)
+        .orDefault(0.9)
+        .orEnclosing();
+}
 
 template <int Dim>
-using Key = typename Strength<Dim>::Keyword;
+JohnsonCook<Dim>::JohnsonCook(const Dictionary& dict) : JohnsonCook(dict, keywords().read(dict)) {}
 
 template <int Dim>
-const Key<Dim> aKey{"A", "Pa", "Johnson-Cook yield stress A", std::nullopt, 0.0, false};
-template <int Dim>
-const Key<Dim> bKey{"B", "Pa", "Johnson-Cook hardening coefficient B", std::nullopt, 0.0, false};
-template <int Dim>
-const Key<Dim> nKey{"n", "-", "Johnson-Cook hardening exponent n", std::nullopt, 0.0, true};
-template <int Dim>
-const Key<Dim> cKey{"C", "-", "Johnson-Cook strain-rate coefficient C", std::nullopt, 0.0, false};
-template <int Dim>
-const Key<Dim> mKey{"m", "-", "Johnson-Cook thermal-softening exponent m", std::nullopt, 0.0, true};
-template <int Dim>
-const Key<Dim> rateKey{"epsilonDot0", "1/s", "reference strain rate", 1.0, 0.0, true};
-template <int Dim>
-const Key<Dim> roomKey{"Troom", "K", "room temperature", 293.15, 0.0, true};
-template <int Dim>
-const Key<Dim> meltKey{"Tmelt", "K", "melting temperature", std::nullopt, 0.0, true};
-template <int Dim>
-const Key<Dim> heatKey{"specificHeat", "J/kg/K", "specific heat c_v", std::nullopt, 0.0, true};
-template <int Dim>
-const Key<Dim> betaKey{"taylorQuinney", "-", "Taylor-Quinney coefficient beta", 0.9, 0.0, false, 1.0};
-
-}  // namespace
-
-template <int Dim>
-JohnsonCook<Dim>::JohnsonCook(const Dictionary& dict)
-    : Hookean<Dim>(dict),
-      a_(this->read(dict, aKey<Dim>)),
-      b_(this->read(dict, bKey<Dim>)),
-      n_(this->read(dict, nKey<Dim>)),
-      c_(this->read(dict, cKey<Dim>)),
-      m_(this->read(dict, mKey<Dim>)),
-      referenceRate_(this->read(dict, rateKey<Dim>)),
-      roomTemperature_(this->read(dict, roomKey<Dim>)),
-      meltTemperature_(this->read(dict, meltKey<Dim>)),
-      specificHeat_(this->read(dict, heatKey<Dim>)),
-      taylorQuinney_(this->read(dict, betaKey<Dim>)) {
+JohnsonCook<Dim>::JohnsonCook(const Dictionary& dict, const KeywordValues& v)
+    : Hookean<Dim>(dict, v),
+      a_(v.scalar("A")),
+      b_(v.scalar("B")),
+      n_(v.scalar("n")),
+      c_(v.scalar("C")),
+      m_(v.scalar("m")),
+      referenceRate_(v.scalar("epsilonDot0")),
+      roomTemperature_(v.scalar("Troom")),
+      meltTemperature_(v.scalar("Tmelt")),
+      specificHeat_(v.scalar("specificHeat")),
+      taylorQuinney_(v.scalar("taylorQuinney")) {
     if (!(meltTemperature_ > roomTemperature_))
-        throw dict.error("Tmelt", "expected Tmelt > Troom = " + this->formatNumber(roomTemperature_) +
-                                      " K, found " + this->formatNumber(meltTemperature_) + " K");
+        throw v.error("Tmelt", "expected Tmelt > Troom = " + this->formatNumber(roomTemperature_) +
+                                   " K, found " + this->formatNumber(meltTemperature_) + " K");
 }
 
 template <int Dim>
@@ -125,14 +141,6 @@ void JohnsonCook<Dim>::returnToYieldSurface(const Fields& f, double dt) const {
         }
         if (f.plasticWorkRate) f.plasticWorkRate[i] = work;
     }
-}
-
-template <int Dim>
-std::vector<typename Strength<Dim>::Keyword> JohnsonCook<Dim>::keywords() const {
-    auto keys = Hookean<Dim>::keywords();
-    keys.insert(keys.end(), {aKey<Dim>, bKey<Dim>, nKey<Dim>, cKey<Dim>, mKey<Dim>, rateKey<Dim>,
-                             roomKey<Dim>, meltKey<Dim>, heatKey<Dim>, betaKey<Dim>});
-    return keys;
 }
 
 template class JohnsonCook<1>;

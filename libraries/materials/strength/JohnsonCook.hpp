@@ -31,6 +31,7 @@ public:
     using typename Strength<Dim>::Fields;
 
     explicit JohnsonCook(const Dictionary& dict);
+    static KeywordSchema keywords();
 
     bool usesPlasticStrain() const override { return true; }
     bool usesTemperature() const override { return true; }
@@ -39,9 +40,10 @@ public:
 
     void returnToYieldSurface(const Fields& fields, double dt) const override;
     double yieldStress(double plasticStrain, double strainRate, double temperature) const override;
-    std::vector<typename Strength<Dim>::Keyword> keywords() const override;
 
 private:
+    JohnsonCook(const Dictionary& dict, const KeywordValues& values);
+
     // (1 + C ln(max(rate/epsilonDot0, 1))) (1 - T*^m): the factor of A + B epsP^n.
     double softening(double strainRate, double temperature) const;
 

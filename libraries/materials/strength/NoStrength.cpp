@@ -5,7 +5,9 @@
 namespace mfdyn {
 
 template <int Dim>
-NoStrength<Dim>::NoStrength(const Dictionary& dict) : Strength<Dim>(dict) {}
+NoStrength<Dim>::NoStrength(const Dictionary& dict) : Strength<Dim>(dict) {
+    keywords().read(dict);
+}
 
 // A caller that allocated tau anyway (a mixed block) gets zero stress rather than stale values.
 template <int Dim>

@@ -13,6 +13,8 @@ public:
     using typename Strength<Dim>::Fields;
 
     explicit NoStrength(const Dictionary& dict);
+    // No keywords beyond `type`.
+    static KeywordSchema keywords() { return KeywordSchema(Strength<Dim>::familyName, "none"); }
 
     bool allocatesStress() const override { return false; }
     void update(const Fields& fields, double dt) const override;

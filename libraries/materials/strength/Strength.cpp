@@ -10,27 +10,11 @@ namespace mfdyn {
 
 template <int Dim>
 std::string Strength<Dim>::formatNumber(double value) {
-    return materialParameters::formatNumber(value);
+    return formatKeywordNumber(value);
 }
 
 template <int Dim>
 Strength<Dim>::Strength(const Dictionary& dict) : type_(dict.get<std::string>("type")) {}
-
-template <int Dim>
-double Strength<Dim>::read(const Dictionary& dict, const Keyword& key) {
-    return materialParameters::read(dict, key, "strength");
-}
-
-template <int Dim>
-std::string Strength<Dim>::readWord(const Dictionary& dict, const char* key, const std::string& fallback,
-                                    const std::vector<std::string>& allowed) {
-    return materialParameters::readWord(dict, key, fallback, allowed);
-}
-
-template <int Dim>
-bool Strength<Dim>::readSwitch(const Dictionary& dict, const char* key, bool fallback) {
-    return materialParameters::readSwitch(dict, key, fallback);
-}
 
 template <int Dim>
 double Strength<Dim>::equivalentStress(const SymmTensor<Dim>& tau) const {

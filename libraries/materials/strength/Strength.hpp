@@ -36,8 +36,11 @@
 // `none`, so a fluid carries no tau), usesPlasticStrain(), usesTemperature() (initialise it to
 // initialTemperature()), usesDensity().
 //
-// Parameters are read from the strength dictionary, then from the enclosing material dictionary
-// (dict.parent()), so that shared constants stay with the material:
+// Keywords: each model declares them once in `static KeywordSchema keywords()` (core/
+// KeywordSchema.hpp) and reads its dictionary through it; `-describe strength` and
+// doc/models/strength/ list them. Parameters are read from the strength dictionary, then from the
+// enclosing material dictionary (dict.parent(), orEnclosing), so that shared constants stay with
+// the material:
 //
 //     materials { target { rho0 2785; shearModulus 27.1e9; yieldStress 0.265e9;
 //                          strength { type vonMises; } } }
@@ -48,7 +51,6 @@
 #include "core/Dictionary.hpp"
 #include "core/Registry.hpp"
 #include "core/Tensor.hpp"
-#include "materials/MaterialParameters.hpp"
 
 #include <cstddef>
 #include <limits>
@@ -79,9 +81,6 @@ public:
         double* plasticWorkRate = nullptr;              // out, optional: sigma:dEpsP/dt [W/m^3]
     };
 
-    // A scalar keyword of a model: declared once, read, bounds-checked and reported through it.
-    using Keyword = MaterialKeyword;  // materials/MaterialParameters.hpp
-
     virtual ~Strength() = default;
     Strength(const Strength&) = delete;
     Strength& operator=(const Strength&) = delete;
@@ -107,11 +106,6 @@ public:
     // temperature [K]: +infinity for a law without yield, 0 for `none`.
     virtual double yieldStress(double plasticStrain, double strainRate, double temperature) const = 0;
 
-    // The model's numeric keywords (its schema: name, unit, meaning, default, bounds), for
-    // listings, generated docs and the family's keyword tests. Word options (deviator, libersky)
-    // are described in the model's header.
-    virtual std::vector<Keyword> keywords() const { return {}; }
-
     // G [Pa] (0 for none).
     double shearModulus() const { return shearModulus_; }
     // sqrt(3 J2) with the implied out-of-plane components (see the header comment).
@@ -126,13 +120,6 @@ public:
 protected:
     explicit Strength(const Dictionary& dict);
 
-    // Value of `key` from `dict`, else the enclosing material dictionary, else its default;
-    // InputError naming the keyword, unit and meaning when missing or out of bounds.
-    static double read(const Dictionary& dict, const Keyword& key);
-    // A word option with its allowed values, looked up the same way.
-    static std::string readWord(const Dictionary& dict, const char* key, const std::string& fallback,
-                                const std::vector<std::string>& allowed);
-    static bool readSwitch(const Dictionary& dict, const char* key, bool fallback);
     // A number as a user would write it (0.265e9 as 2.65e+08, not 265000000.000000).
     static std::string formatNumber(double value);
 

@@ -22,23 +22,32 @@
 
 namespace mfdyn {
 
-namespace {
+template <int Dim>
+KeywordSchema VonMises<Dim>::keywords() {
+    return Hookean<Dim>::keywords()
+        .rename(Strength<Dim>::familyName, "vonMises")
+        .scalar("yieldStress", "Pa", "initial yield stress sigma_Y0")
+        .greaterThan(0)
+        .orEnclosing()
+        .scalar("hardeningModulus", "Pa", "linear isotropic hardening modulus H")
+        .atLeast(0)
+        .orDefault(0.0)
+        .orEnclosing()
+        .flag("libersky",
+              "return by the factor (sigma_Y/sigma*)^2 of Libersky et al. 1993 instead of radially")
+        .orDefault(false)
+        .orEnclosing();
+}
 
 template <int Dim>
-const typename Strength<Dim>::Keyword yieldStressKey{"yieldStress", "Pa", "initial yield stress sigma_Y0",
-                                                     std::nullopt,  0.0,  true};
-template <int Dim>
-const typename Strength<Dim>::Keyword hardeningKey{
-    "hardeningModulus", "Pa", "linear isotropic hardening modulus H", 0.0, 0.0, false};
-
-}  // namespace
+VonMises<Dim>::VonMises(const Dictionary& dict) : VonMises(dict, keywords().read(dict)) {}
 
 template <int Dim>
-VonMises<Dim>::VonMises(const Dictionary& dict)
-    : Hookean<Dim>(dict),
-      yield0_(this->read(dict, yieldStressKey<Dim>)),
-      hardening_(this->read(dict, hardeningKey<Dim>)),
-      libersky_(this->readSwitch(dict, "libersky", false)) {}
+VonMises<Dim>::VonMises(const Dictionary& dict, const KeywordValues& v)
+    : Hookean<Dim>(dict, v),
+      yield0_(v.scalar("yieldStress")),
+      hardening_(v.scalar("hardeningModulus")),
+      libersky_(v.flag("libersky")) {}
 
 template <int Dim>
 void VonMises<Dim>::returnToYieldSurface(const Fields& f, double dt) const {
@@ -66,13 +75,6 @@ void VonMises<Dim>::returnToYieldSurface(const Fields& f, double dt) const {
 template <int Dim>
 double VonMises<Dim>::yieldStress(double plasticStrain, double, double) const {
     return yield0_ + hardening_ * plasticStrain;
-}
-
-template <int Dim>
-std::vector<typename Strength<Dim>::Keyword> VonMises<Dim>::keywords() const {
-    auto keys = Hookean<Dim>::keywords();
-    keys.insert(keys.end(), {yieldStressKey<Dim>, hardeningKey<Dim>});
-    return keys;
 }
 
 template class VonMises<1>;

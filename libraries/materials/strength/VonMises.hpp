@@ -22,16 +22,18 @@ public:
     using typename Strength<Dim>::Fields;
 
     explicit VonMises(const Dictionary& dict);
+    static KeywordSchema keywords();
 
     bool usesPlasticStrain() const override { return true; }
     void returnToYieldSurface(const Fields& fields, double dt) const override;
     double yieldStress(double plasticStrain, double strainRate, double temperature) const override;
-    std::vector<typename Strength<Dim>::Keyword> keywords() const override;
 
     double hardeningModulus() const { return hardening_; }
     bool libersky() const { return libersky_; }
 
 private:
+    VonMises(const Dictionary& dict, const KeywordValues& values);
+
     double yield0_ = 0.0;
     double hardening_ = 0.0;
     bool libersky_ = false;

@@ -179,5 +179,51 @@ TEST(KernelFamily, registersTheSevenTypes) {
     }
 }
 
+// Every kernel type reads through a keyword schema registered with it: `hConvention` for all, the
+// gaussian's `cutoff`; each required keyword (none so far) removed is named; a wrong word or an
+// out-of-bounds value is an InputError naming the keyword.
+TEST(KernelKeywords, EveryTypeDeclaresAKeywordSchema) {
+    makeKernel("type wendlandC2;");
+    const RegistryFamily* family = RegistryIndex::global().findFamily(Kernel::familyName);
+    ASSERT_NE(family, nullptr);
+    for (const auto& type : Kernel::Selector::names()) {
+        const RegistryItem* item = family->find(type);
+        ASSERT_NE(item->keywords, nullptr) << type << " declares no keyword schema";
+        const KeywordSchema schema = item->keywords();
+        EXPECT_EQ(schema.type(), type);
+        EXPECT_NE(schema.find("hConvention"), nullptr) << type;
+        EXPECT_EQ(item->sourceFile.rfind("libraries/kernels/", 0), 0u) << item->sourceFile;
+        for (const Keyword& k : schema.keywords()) {
+            if (k.kind != Keyword::Kind::required) continue;
+            // A dictionary with every keyword at its sample value, less this one.
+            std::string text = "type " + type + ";";
+            for (const Keyword& other : schema.keywords())
+                if (other.name != k.name) text += " " + other.name + " " + other.sampleValue() + ";";
+            try {
+                makeKernel(text);
+                ADD_FAILURE() << type << " built without required " << k.name;
+            } catch (const InputError& e) {
+                EXPECT_NE(std::string(e.what()).find("missing keyword '" + k.name + "'"), std::string::npos)
+                    << e.what();
+            }
+        }
+    }
+    try {
+        makeKernel("type wendlandC2; hConvention radius;");
+        ADD_FAILURE() << "unknown hConvention accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("expected one of standard | supportRadius"), std::string::npos)
+            << e.what();
+    }
+    try {
+        makeKernel("type gaussian; cutoff -1;");
+        ADD_FAILURE() << "negative cutoff accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("keyword 'cutoff': expected a value > 0, found -1"),
+                  std::string::npos)
+            << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace mfdyn

@@ -94,6 +94,42 @@ TEST(EquationOfStateContract, MissingRequiredKeywordIsNamed) {
     }
 }
 
+// Every type reads through a keyword schema (core/KeywordSchema.hpp) registered with it; the
+// schema's required keywords are the sample's, and each, removed, is named in the error.
+TEST(EquationOfStateContract, EveryTypeDeclaresAKeywordSchema) {
+    makeEos("type idealGas; gamma 1.4;");
+    const RegistryFamily* family = RegistryIndex::global().findFamily(EquationOfState::familyName);
+    ASSERT_NE(family, nullptr);
+    for (const auto& s : eosSamples()) {
+        const RegistryItem* item = family->find(s.type);
+        ASSERT_NE(item, nullptr) << s.type;
+        ASSERT_NE(item->keywords, nullptr) << s.type << " declares no keyword schema";
+        const KeywordSchema schema = item->keywords();
+        EXPECT_EQ(schema.family(), "equationOfState");
+        EXPECT_EQ(schema.type(), s.type);
+        EXPECT_EQ(item->sourceFile.rfind("libraries/materials/equationOfState/", 0), 0u) << item->sourceFile;
+        std::set<std::string> required, sampled(s.required.begin(), s.required.end());
+        for (const Keyword& k : schema.keywords()) {
+            EXPECT_FALSE(k.meaning.empty()) << s.type << " " << k.name;
+            EXPECT_FALSE(k.unit.empty()) << s.type << " " << k.name;
+            if (k.kind != Keyword::Kind::required) continue;
+            required.insert(k.name);
+            try {
+                makeEos(dictionaryText(s, k.name));
+                ADD_FAILURE() << s.type << " built without required '" << k.name << "'";
+            } catch (const InputError& error) {
+                EXPECT_NE(std::string(error.what()).find("missing keyword '" + k.name + "'"),
+                          std::string::npos)
+                    << s.type << ": " << error.what();
+            }
+        }
+        EXPECT_EQ(required, sampled) << s.type;
+        // Every keyword the sample gives is declared.
+        for (const auto& [key, value] : s.keywords)
+            EXPECT_NE(schema.find(key), nullptr) << s.type << " " << key;
+    }
+}
+
 TEST(EquationOfStateContract, UnknownTypeListsTheValidOnes) {
     try {
         makeEos("type mieGrunesen; rho0 2785; c0 5330; s 1.338; gamma0 2;");

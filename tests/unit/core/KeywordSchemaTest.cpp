@@ -1,0 +1,236 @@
+// The keyword schema reader (core/KeywordSchema.hpp): a missing required keyword, a value outside
+// its bounds and a word outside its choices are InputErrors at file:line naming the keyword; a
+// default is applied and echoed once in the log; reading an undeclared name is a logic error; a
+// registration carries its schema and source file into -listModels and -describe.
+#include "core/KeywordSchema.hpp"
+
+#include "core/Dictionary.hpp"
+#include "core/Registry.hpp"
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <stdexcept>
+
+using namespace mfdyn;
+
+namespace {
+
+KeywordSchema widgetSchema() {
+    return KeywordSchema("widgetForTest", "spring")
+        .scalar("stiffness", "N/m", "spring constant")
+        .greaterThan(0)
+        .scalar("damping", "-", "damping ratio")
+        .atLeast(0)
+        .atMost(1)
+        .orDefault(0.05)
+        .word("law", {"linear", "cubic"}, "force law")
+        .orDefault("linear")
+        .integer("coils", "-", "number of coils")
+        .atLeast(1)
+        .optional()
+        .flag("preloaded", "start compressed")
+        .orDefault(false)
+        .scalar("length", "m", "rest length")
+        .greaterThan(0)
+        .orEnclosing();
+}
+
+std::string messageOf(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    ADD_FAILURE() << "no InputError";
+    return {};
+}
+
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+TEST(KeywordSchema, ReadsGivenValues) {
+    const Dictionary dict = Dictionary::parse(
+        "stiffness 2e3; damping 0.2; law cubic; coils 12; preloaded yes; length 0.1;", "widgetDict");
+    const KeywordValues v = widgetSchema().read(dict);
+    EXPECT_EQ(v.scalar("stiffness"), 2e3);
+    EXPECT_EQ(v.scalar("damping"), 0.2);
+    EXPECT_EQ(v.word("law"), "cubic");
+    EXPECT_EQ(v.integer("coils"), 12);
+    EXPECT_TRUE(v.flag("preloaded"));
+    EXPECT_TRUE(v.given("coils"));
+    EXPECT_TRUE(v.defaultsUsed().empty());
+    EXPECT_TRUE(dict.unusedEntries().empty());  // every declared keyword was read
+}
+
+TEST(KeywordSchema, MissingRequiredKeywordNamesFileLineAndKeyword) {
+    const Dictionary top =
+        Dictionary::parse("springs\n{\n    a\n    {\n        damping 0.1;\n        length 1;\n    }\n}\n",
+                          "constant/widgetDict");
+    const std::string what = messageOf([&] { widgetSchema().read(top.subDict("springs").subDict("a")); });
+    EXPECT_TRUE(contains(what, "constant/widgetDict:3")) << what;  // the sub-dictionary's line
+    EXPECT_TRUE(contains(what, "missing keyword 'stiffness'")) << what;
+    EXPECT_TRUE(contains(what, "N/m")) << what;
+    EXPECT_TRUE(contains(what, "widgetForTest type 'spring'")) << what;
+}
+
+TEST(KeywordSchema, MissingEnclosingKeywordNamesBothScopes) {
+    const Dictionary top = Dictionary::parse("a { spring { stiffness 1; } }", "widgetDict");
+    const std::string what = messageOf([&] { widgetSchema().read(top.subDict("a").subDict("spring")); });
+    EXPECT_TRUE(contains(what, "missing keyword 'length'")) << what;
+    EXPECT_TRUE(contains(what, "looked for in 'a/spring' and in the enclosing 'a'")) << what;
+}
+
+TEST(KeywordSchema, EnclosingDictionaryGivesTheValueAndOwnEntryWins) {
+    const Dictionary top = Dictionary::parse(
+        "a { length 2; spring { stiffness 1; } } b { length 2; spring { stiffness 1; length 3; } }",
+        "widgetDict");
+    EXPECT_EQ(widgetSchema().read(top.subDict("a").subDict("spring")).scalar("length"), 2.0);
+    EXPECT_EQ(widgetSchema().read(top.subDict("b").subDict("spring")).scalar("length"), 3.0);
+    // `stiffness` is not orEnclosing: a material's entry is not taken for it.
+    const Dictionary c = Dictionary::parse("c { stiffness 1; spring { length 1; } }", "widgetDict");
+    EXPECT_TRUE(contains(messageOf([&] { widgetSchema().read(c.subDict("c").subDict("spring")); }),
+                         "missing keyword 'stiffness'"));
+}
+
+TEST(KeywordSchema, OutOfBoundsValueNamesBoundAndUnit) {
+    const Dictionary dict = Dictionary::parse("length 1;\nstiffness -3;", "widgetDict");
+    const std::string what = messageOf([&] { widgetSchema().read(dict); });
+    EXPECT_TRUE(contains(what, "widgetDict:2")) << what;
+    EXPECT_TRUE(contains(what, "keyword 'stiffness': expected a value > 0 (N/m), found -3")) << what;
+    const Dictionary two = Dictionary::parse("length 1; stiffness 3; damping 1.5;", "widgetDict");
+    EXPECT_TRUE(
+        contains(messageOf([&] { widgetSchema().read(two); }), "expected a value >= 0 and <= 1, found 1.5"));
+    const Dictionary three = Dictionary::parse("length 1; stiffness 3; coils 0;", "widgetDict");
+    EXPECT_TRUE(
+        contains(messageOf([&] { widgetSchema().read(three); }), "keyword 'coils': expected a value >= 1"));
+}
+
+TEST(KeywordSchema, WrongTypeIsAnInputError) {
+    const Dictionary dict = Dictionary::parse("length 1; stiffness soft;", "widgetDict");
+    EXPECT_TRUE(contains(messageOf([&] { widgetSchema().read(dict); }),
+                         "keyword 'stiffness': expected a real number"));
+    const Dictionary coils = Dictionary::parse("length 1; stiffness 1; coils 2.5;", "widgetDict");
+    EXPECT_TRUE(
+        contains(messageOf([&] { widgetSchema().read(coils); }), "keyword 'coils': expected an integer"));
+}
+
+TEST(KeywordSchema, WrongWordListsTheValidChoices) {
+    const Dictionary dict = Dictionary::parse("length 1; stiffness 1; law cubik;", "widgetDict");
+    const std::string what = messageOf([&] { widgetSchema().read(dict); });
+    EXPECT_TRUE(contains(what, "keyword 'law': expected one of linear | cubic, found 'cubik'")) << what;
+    EXPECT_TRUE(contains(what, "did you mean 'cubic'")) << what;
+}
+
+TEST(KeywordSchema, DefaultsAreAppliedAndEchoedOnce) {
+    const Dictionary top =
+        Dictionary::parse("parts { spring { stiffness 1; length 1; law cubic; } }", "widgetDict");
+    const Dictionary& dict = top.subDict("parts").subDict("spring");
+    testing::internal::CaptureStdout();
+    const KeywordValues v = widgetSchema().read(dict);
+    const std::string log = testing::internal::GetCapturedStdout();
+    EXPECT_EQ(v.scalar("damping"), 0.05);
+    EXPECT_FALSE(v.flag("preloaded"));
+    EXPECT_FALSE(v.given("damping"));
+    EXPECT_FALSE(v.optionalScalar("coils"));  // optional, no default: absent
+    EXPECT_EQ(v.defaultsUsed(), (std::vector<std::string>{"damping 0.05", "preloaded no"}));
+    EXPECT_EQ(log, "widgetForTest spring (parts/spring): damping 0.05 (default); preloaded no (default)\n");
+    // The dictionary keeps them for the solver's "Defaults used" summary.
+    EXPECT_EQ(dict.defaultsUsed(),
+              (std::vector<std::string>{"parts/spring/damping 0.05", "parts/spring/preloaded no"}));
+}
+
+TEST(KeywordSchema, UndeclaredNameIsALogicErrorNamingTheModel) {
+    const Dictionary dict = Dictionary::parse("stiffness 1; length 1;", "widgetDict");
+    const KeywordValues v = widgetSchema().read(dict);
+    try {
+        v.scalar("stifness");
+        FAIL() << "undeclared keyword read";
+    } catch (const std::logic_error& e) {
+        EXPECT_TRUE(contains(e.what(), "widgetForTest spring")) << e.what();
+        EXPECT_TRUE(contains(e.what(), "'stifness'")) << e.what();
+    }
+    EXPECT_THROW(v.word("stiffness"), std::logic_error);  // declared as a real number
+    EXPECT_THROW(KeywordSchema("f", "t").scalar("x", "-", "x").atLeast(0).orDefault(-1.0), std::logic_error);
+    EXPECT_THROW(KeywordSchema("f", "t").word("w", {"a", "b"}, "w").orDefault("c"), std::logic_error);
+}
+
+TEST(KeywordSchema, TypoOfADeclaredKeywordIsSuggested) {
+    const Dictionary dict = Dictionary::parse("stiffness 1; length 1; dampng 0.1;", "widgetDict");
+    widgetSchema().read(dict);
+    const auto unused = dict.unusedEntries();
+    ASSERT_EQ(unused.size(), 1u);
+    EXPECT_EQ(unused[0].suggestion, "damping");
+}
+
+TEST(KeywordSchema, SummaryAndSampleValues) {
+    const std::string summary = widgetSchema().summary("  ");
+    EXPECT_TRUE(contains(summary, "  stiffness  N/m  required")) << summary;
+    EXPECT_TRUE(contains(summary, "default 0.05")) << summary;
+    EXPECT_TRUE(contains(summary, ">= 0 and <= 1")) << summary;
+    EXPECT_TRUE(contains(summary, "linear | cubic")) << summary;
+    EXPECT_TRUE(contains(summary, "or in the enclosing dictionary")) << summary;
+    const KeywordSchema schema = widgetSchema();
+    const auto& keys = schema.keywords();
+    EXPECT_EQ(keys[0].sampleValue(), "1");
+    EXPECT_EQ(keys[1].sampleValue(), "0.05");
+    EXPECT_EQ(keys[3].sampleValue(), "1");
+    EXPECT_EQ(formatKeywordNumber(0.1), "0.1");
+    EXPECT_EQ(formatKeywordNumber(1.0 / 3.0), "0.3333333333333333");
+}
+
+// ---- registration ----------------------------------------------------------------------------
+
+namespace {
+
+struct Widget {
+    static constexpr const char* familyName = "widgetForTest";
+    using Selector = Registry<Widget, const Dictionary&>;
+    explicit Widget(const Dictionary&) {}
+    virtual ~Widget() = default;
+};
+
+struct Spring final : Widget {
+    static KeywordSchema keywords() { return widgetSchema(); }
+    explicit Spring(const Dictionary& dict)
+        : Widget(dict), stiffness(keywords().read(dict).scalar("stiffness")) {}
+    double stiffness;
+};
+
+struct Lever final : Widget {  // no schema yet: registers as before
+    using Widget::Widget;
+};
+
+MFDYN_REGISTER(Widget, Spring, "spring", "a spring");
+MFDYN_REGISTER(Widget, Lever, "lever", "a lever");
+
+}  // namespace
+
+TEST(KeywordSchema, RegistrationCarriesSchemaAndSourceFile) {
+    const RegistryFamily* fam = RegistryIndex::global().findFamily("widgetForTest");
+    ASSERT_NE(fam, nullptr);
+    const RegistryItem* spring = fam->find("spring");
+    const RegistryItem* lever = fam->find("lever");
+    ASSERT_TRUE(spring && lever);
+    ASSERT_NE(spring->keywords, nullptr);
+    EXPECT_EQ(spring->keywords().keywords().size(), widgetSchema().keywords().size());
+    EXPECT_EQ(lever->keywords, nullptr);
+    EXPECT_EQ(spring->sourceFile, "tests/unit/core/KeywordSchemaTest.cpp");
+    const Dictionary dict = Dictionary::parse("type spring; stiffness 4; length 1;", "widgetDict");
+    testing::internal::CaptureStdout();
+    EXPECT_NE(Widget::Selector::New(dict), nullptr);
+    testing::internal::GetCapturedStdout();
+
+    const std::string listing = RegistryIndex::global().listing();
+    EXPECT_TRUE(contains(listing, "a spring  [coreKeywordSchemaTest]\n        stiffness  N/m  required"))
+        << listing;
+    const std::string described = RegistryIndex::global().describe("widgetForTest/spring");
+    EXPECT_TRUE(contains(described, "source:  tests/unit/core/KeywordSchemaTest.cpp")) << described;
+    EXPECT_TRUE(contains(described, "damping ratio")) << described;
+    EXPECT_TRUE(contains(RegistryIndex::global().describe("lever"), "no schema declared yet"));
+    EXPECT_TRUE(contains(RegistryIndex::global().describe("widgetForTest"), "lever"));
+    EXPECT_THROW(RegistryIndex::global().describe("sprng"), InputError);
+}
