@@ -102,6 +102,15 @@ std::map<std::string, std::vector<TutorialUse>> scanTutorials(const fs::path& so
             if (!found && (part == "constant" || part == "system")) found = true;
             (found ? inCase : caseDir) /= part;
         }
+        // Name the tutorial, the nearest directory with an Allrun: a tutorial's Allrun may make
+        // further cases from its own (asymmetricImpact's row1..3 from base/), and those exist
+        // only after a run, so pages written from a used tree must not list them apart.
+        for (fs::path dir = caseDir; !dir.empty() && dir != "tutorials"; dir = dir.parent_path())
+            if (fs::exists(source / dir / "Allrun")) {
+                inCase = caseDir.lexically_relative(dir) / inCase;
+                caseDir = dir;
+                break;
+            }
         for (std::size_t pos = text.find("type"); pos != std::string::npos;
              pos = text.find("type", pos + 4)) {
             const bool startOfWord = pos == 0 || !(std::isalnum(static_cast<unsigned char>(text[pos - 1])) ||
@@ -251,12 +260,11 @@ std::string page(const TypeDoc& doc, const std::vector<std::string>& related, co
         s << "No tutorial uses this type yet.\n";
     } else {
         s << "Tutorials using `type " << item.name << ";`:\n\n";
-        for (const auto& [dir, files] : cases) {
-            std::string list;
-            for (const auto& f : files) list += (list.empty() ? "" : ", ") + ("`" + f + "`");
+        // Files are not listed: cases an Allrun makes would add theirs after a run.
+        for (const auto& entry : cases) {
+            const std::string& dir = entry.first;
             const bool readme = fs::exists(source / dir / "README.md");
-            s << "- [" << dir << "](" << toRoot << dir << (readme ? "/README.md" : "") << ") (" << list
-              << ")\n";
+            s << "- [" << dir << "](" << toRoot << dir << (readme ? "/README.md" : "") << ")\n";
         }
     }
     return s.str();
