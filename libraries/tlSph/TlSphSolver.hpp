@@ -14,6 +14,7 @@
 //     smoothingLengthRatio 1.3;                  // h = ratio x spacing (default 1.3)
 //     spacing     0.05;                          // optional: particle spacing (default: largest V^(1/d))
 //     gradient    corrected;                     // corrected | uncorrected | correctedKernel
+//                                                // (default correctedKernel under lagrangeMultiplier)
 //     dissipation { type jst; momentum (0 0.125); jacobian (0 0); }   // tlDissipation family
 //     projection  { momentum yes; dissipation yes; jacobian yes; }    // the conservation projections
 //     alphaCFL    0.3;                           // dt = alphaCFL h_min / c_p,max
