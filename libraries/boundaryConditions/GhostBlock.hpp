@@ -5,8 +5,10 @@
 //
 //     rhoGhost[g] = rho[block.source[g]];        (or block.gather(rho))
 //
-// Vectors other than velocity (and tensors) must be reflected, not copied: with the plane's unit
-// normal n kept per ghost, R = I - 2 n n^T, a vector maps to R a and a tensor to R T R.
+// Vectors other than velocity (and tensors) must be reflected, not copied: with the orthogonal
+// map Q kept per ghost (R = I - 2 n n^T for the image across one plane of unit normal n; the
+// product R2 R1 for the image across plane 2 of an image across plane 1, as at a corner), a
+// vector maps to Q a and a tensor to Q T Q^T.
 // Ghosts are regenerated every step (sph-impact.md section 4), never integrated.
 #include "core/Tensor.hpp"
 
@@ -20,7 +22,7 @@ struct GhostBlock {
     std::vector<Vector<Dim>> position;
     std::vector<Vector<Dim>> velocity;
     std::vector<std::size_t> source;  // index of the real particle each ghost mirrors
-    std::vector<Vector<Dim>> normal;  // unit normal of the mirror plane that made it
+    std::vector<Tensor<Dim>> map;     // orthogonal map from the source to the ghost (reflections)
 
     std::size_t size() const { return source.size(); }
     bool empty() const { return source.empty(); }
@@ -28,13 +30,13 @@ struct GhostBlock {
         position.clear();
         velocity.clear();
         source.clear();
-        normal.clear();
+        map.clear();
     }
     void append(const GhostBlock& other) {
         position.insert(position.end(), other.position.begin(), other.position.end());
         velocity.insert(velocity.end(), other.velocity.begin(), other.velocity.end());
         source.insert(source.end(), other.source.begin(), other.source.end());
-        normal.insert(normal.end(), other.normal.begin(), other.normal.end());
+        map.insert(map.end(), other.map.begin(), other.map.end());
     }
     // A field of the real particles copied to the ghosts (scalars: density, mass, pressure, h).
     template <class T>
@@ -44,14 +46,11 @@ struct GhostBlock {
         return out;
     }
     // (Two names: in 1D a vector and a tensor are the same C++ type.)
-    // The mirror image R a of a vector belonging to ghost g's source.
-    Vector<Dim> reflectVector(std::size_t g, const Vector<Dim>& a) const {
-        return a - 2.0 * a.dot(normal[g]) * normal[g];
-    }
-    // The mirror image R T R of a tensor (stress) belonging to ghost g's source.
+    // The mirror image Q a of a vector belonging to ghost g's source.
+    Vector<Dim> reflectVector(std::size_t g, const Vector<Dim>& a) const { return map[g] * a; }
+    // The mirror image Q T Q^T of a tensor (stress) belonging to ghost g's source.
     Tensor<Dim> reflectTensor(std::size_t g, const Tensor<Dim>& t) const {
-        const Tensor<Dim> r = Tensor<Dim>::Identity() - 2.0 * normal[g] * normal[g].transpose();
-        return r * t * r;
+        return map[g] * t * map[g].transpose();
     }
 };
 

@@ -9,8 +9,13 @@
 // the plane pushes approaching particles back and the kernel sums near the plane are complete.
 // 3 h_max covers the support of the Gaussian truncated at 3h (sph-impact.md section 1); give
 // `thicknessFactor 2` for a kernel with support 2h, or `thickness` in metres.
+// Images of images: the ghosts already made by the conditions written before this one (other
+// mirror planes) are mirrored too, where within the layer and made from a selected particle,
+// with their maps composed (GhostBlock::map = R2 R1): two perpendicular planes give the corner
+// quadrant, three the octant, as the reflection group of perpendicular planes needs. Planes at
+// other angles generate larger groups that one pass in the written order does not close.
 // Limits: particles on the plane (d within tolerance) make no ghost, since it would sit on top of
-// its source; a corner of two mirror planes needs the ghosts of ghosts, which are not made.
+// its source.
 //
 // Usage: name { type mirrorPlane; point (0 0 0); normal (1 0 0);  [noSlip no;]
 //               [thicknessFactor 3; | thickness 0.01;] [tolerance 1e-9;]
@@ -48,16 +53,37 @@ void MirrorPlane<Dim>::ghostLayer(const ParticleSet<Dim>& particles, const std::
     const auto& x = particles.position();
     const VectorType& n = plane_.normal();
     const double layer = thickness(hMax);
+    using TensorType = Tensor<Dim>;
+    const TensorType reflection = TensorType::Identity() - 2.0 * n * n.transpose();
+    const auto image = [&](const VectorType& v) {
+        return noSlip_ ? VectorType(-v) : VectorType(reflection * v);
+    };
+    const std::size_t earlier = block.size();  // ghosts of the conditions written before this one
     // Serial, in index order: the block is the same for any thread count, and the pass is one
     // dot product per particle, cheap next to the neighbour search it feeds.
-    for (std::size_t i : this->selection_.indices()) {
+    const auto& selected = this->selection_.indices();
+    for (std::size_t i : selected) {
         const double d = plane_.signedDistance(x[i]);
         if (d <= plane_.tolerance() || d >= layer) continue;
         block.position.push_back(x[i] - 2.0 * d * n);
-        const VectorType& v = velocity[i];
-        block.velocity.push_back(noSlip_ ? VectorType(-v) : VectorType(v - 2.0 * v.dot(n) * n));
+        block.velocity.push_back(image(velocity[i]));
         block.source.push_back(i);
-        block.normal.push_back(n);
+        block.map.push_back(reflection);
+    }
+    if (earlier == 0) return;
+    std::vector<char> isSelected(x.size(), 0);
+    for (std::size_t i : selected) isSelected[i] = 1;
+    for (std::size_t g = 0; g < earlier; ++g) {
+        if (!isSelected[block.source[g]]) continue;
+        const VectorType position = block.position[g];
+        const double d = plane_.signedDistance(position);
+        if (d <= plane_.tolerance() || d >= layer) continue;
+        const VectorType velocity = image(block.velocity[g]);
+        const TensorType map = reflection * block.map[g];
+        block.position.push_back(position - 2.0 * d * n);
+        block.velocity.push_back(velocity);
+        block.source.push_back(block.source[g]);
+        block.map.push_back(map);
     }
 }
 
