@@ -207,6 +207,22 @@ KeywordSchema& KeywordSchema::orDefault(const std::string& value) {
     return *this;
 }
 
+KeywordSchema& KeywordSchema::orDefault(const std::vector<double>& value) {
+    Keyword& k = last("orDefault");
+    if (k.type != Keyword::Type::vector)
+        throw std::logic_error(family_ + " " + type_ + ": vector default for keyword " + k.name);
+    std::string text = "(";
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        if (!inside(k, value[i]))
+            throw std::logic_error(family_ + " " + type_ + ": default of " + k.name + " outside its bounds");
+        text += (i ? " " : "") + formatNumber(value[i]);
+    }
+    k.kind = Keyword::Kind::defaulted;
+    k.defaultValue = text + ")";
+    k.defaultList = value;
+    return *this;
+}
+
 KeywordSchema& KeywordSchema::optional() {
     last("optional").kind = Keyword::Kind::optional;
     return *this;
@@ -315,6 +331,9 @@ KeywordValues KeywordSchema::read(const Dictionary& dict) const {
                         break;
                     case Keyword::Type::switchValue:
                         v.flag = k.defaultValue == "yes";
+                        break;
+                    case Keyword::Type::vector:
+                        v.list = k.defaultList;
                         break;
                     default:
                         v.text = k.defaultValue;

@@ -53,9 +53,10 @@ struct Keyword {
     std::string meaning;
     Kind kind = Kind::required;
     Type type = Type::scalar;
-    std::string defaultValue;        // as written in a dictionary: "7", "cubic", "yes"
-    double defaultNumber = 0.0;      // the default of a scalar or integer, exactly
-    std::vector<std::string> words;  // the valid words of Type::word
+    std::string defaultValue;         // as written in a dictionary: "7", "cubic", "yes"
+    double defaultNumber = 0.0;       // the default of a scalar or integer, exactly
+    std::vector<double> defaultList;  // the default of a vector
+    std::vector<std::string> words;   // the valid words of Type::word
     std::optional<KeywordBound> lower, upper;
     bool orEnclosing = false;
 
@@ -94,6 +95,7 @@ public:
     KeywordSchema& orDefault(bool value);
     KeywordSchema& orDefault(const char* value);
     KeywordSchema& orDefault(const std::string& value);
+    KeywordSchema& orDefault(const std::vector<double>& value);  // a vector: written "(1 2)"
     KeywordSchema& optional();
     KeywordSchema& greaterThan(double bound);
     KeywordSchema& atLeast(double bound);

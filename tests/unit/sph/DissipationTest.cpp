@@ -1,0 +1,111 @@
+// The dissipation family: every type reads its dictionary through a keyword schema; the defaults
+// are the thesis's (Zisis 2017 §4.2: a_v = 1, a_rho = 0.5, a_e = 0.1, b = 2) and Monaghan's
+// (alpha 1, beta 2); bad entries are InputErrors naming the entry.
+#include "core/Dictionary.hpp"
+#include "core/Error.hpp"
+#include "core/Registry.hpp"
+#include "sph/MonaghanGingoldViscosity.hpp"
+#include "sph/NoDissipation.hpp"
+#include "sph/RiemannDissipation.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+using namespace mfdyn;
+
+namespace {
+
+DissipationParameters parametersOf(const std::string& text) {
+    return Dissipation::New(Dictionary::parse(text, "dissipation"))->parameters();
+}
+
+// The message of the InputError that `text` raises ("" and a test failure if none).
+std::string errorOf(const std::string& text) {
+    try {
+        parametersOf(text);
+    } catch (const InputError& error) {
+        return error.what();
+    }
+    ADD_FAILURE() << "accepted: " << text;
+    return "";
+}
+
+}  // namespace
+
+TEST(DissipationContract, EveryTypeDeclaresAKeywordSchema) {
+    // Named here so that the library, and its registrations, are linked.
+    const KeywordSchema schemas[] = {RiemannDissipation::keywords(), MonaghanGingoldViscosity::keywords(),
+                                     NoDissipation::keywords()};
+    const RegistryFamily* family = RegistryIndex::global().findFamily(Dissipation::familyName);
+    ASSERT_NE(family, nullptr);
+    for (const KeywordSchema& schema : schemas) {
+        EXPECT_EQ(schema.family(), "dissipation");
+        const RegistryItem* item = family->find(schema.type());
+        ASSERT_NE(item, nullptr) << schema.type();
+        ASSERT_NE(item->keywords, nullptr) << schema.type();
+        EXPECT_EQ(item->keywords().keywords().size(), schema.keywords().size());
+        EXPECT_EQ(item->sourceFile.rfind("libraries/sph/", 0), 0u) << item->sourceFile;
+        for (const Keyword& k : schema.keywords()) {
+            EXPECT_FALSE(k.meaning.empty()) << schema.type() << " " << k.name;
+            EXPECT_FALSE(k.unit.empty()) << schema.type() << " " << k.name;
+            // Every keyword has a default: `dissipation { type <name>; }` is a whole model.
+            EXPECT_EQ(k.kind, Keyword::Kind::defaulted) << schema.type() << " " << k.name;
+        }
+    }
+}
+
+TEST(DissipationContract, DefaultsAreTheThesisAndMonaghanValues) {
+    const DissipationParameters r = parametersOf("type riemann;");
+    EXPECT_EQ(r.kind, DissipationParameters::Kind::riemann);
+    EXPECT_EQ(r.av, 1.0);
+    EXPECT_EQ(r.bv, 2.0);
+    EXPECT_EQ(r.arho, 0.5);
+    EXPECT_EQ(r.brho, 2.0);
+    EXPECT_EQ(r.ae, 0.1);
+    EXPECT_EQ(r.be, 2.0);
+    EXPECT_FALSE(r.alternativeSignal);
+    EXPECT_FALSE(r.allPairs);
+    const DissipationParameters m = parametersOf("type monaghanGingold;");
+    EXPECT_EQ(m.kind, DissipationParameters::Kind::monaghanGingold);
+    EXPECT_EQ(m.alpha, 1.0);
+    EXPECT_EQ(m.beta, 2.0);
+    EXPECT_FALSE(m.balsara);
+    EXPECT_EQ(m.arho, 0.0);
+    EXPECT_EQ(m.brho, 0.0);
+    EXPECT_EQ(parametersOf("type none;").kind, DissipationParameters::Kind::none);
+}
+
+TEST(DissipationContract, GivenValuesAreRead) {
+    const DissipationParameters r = parametersOf(
+        "type riemann; velocity (0.5 1); density (0 0); energy (0.2 3); signal alternative; pairs all;");
+    EXPECT_EQ(r.av, 0.5);
+    EXPECT_EQ(r.bv, 1.0);
+    EXPECT_EQ(r.arho, 0.0);
+    EXPECT_EQ(r.ae, 0.2);
+    EXPECT_EQ(r.be, 3.0);
+    EXPECT_TRUE(r.alternativeSignal);
+    EXPECT_TRUE(r.allPairs);
+    const DissipationParameters m =
+        parametersOf("type monaghanGingold; alpha 0.5; beta 1; balsara yes; density (0.5 0);");
+    EXPECT_EQ(m.alpha, 0.5);
+    EXPECT_EQ(m.beta, 1.0);
+    EXPECT_TRUE(m.balsara);
+    EXPECT_EQ(m.arho, 0.5);
+}
+
+TEST(DissipationContract, BadEntriesNameTheEntryAndTheValidChoices) {
+    const std::string length = errorOf("type riemann; velocity (1 2 3);");
+    EXPECT_NE(length.find("velocity"), std::string::npos) << length;
+    EXPECT_NE(length.find("expected (a b)"), std::string::npos) << length;
+    const std::string negative = errorOf("type riemann; energy (-0.1 2);");
+    EXPECT_NE(negative.find("energy"), std::string::npos) << negative;
+    EXPECT_NE(negative.find(">= 0"), std::string::npos) << negative;
+    const std::string signal = errorOf("type riemann; signal riemman;");
+    EXPECT_NE(signal.find("riemann | alternative"), std::string::npos) << signal;
+    EXPECT_NE(signal.find("did you mean 'riemann'"), std::string::npos) << signal;
+    const std::string alpha = errorOf("type monaghanGingold; alpha -1;");
+    EXPECT_NE(alpha.find("alpha"), std::string::npos) << alpha;
+    const std::string type = errorOf("type monaghanGingol;");
+    EXPECT_NE(type.find("did you mean 'monaghanGingold'"), std::string::npos) << type;
+}
