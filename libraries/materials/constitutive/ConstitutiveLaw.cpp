@@ -15,8 +15,6 @@ namespace mfdyn {
 
 namespace {
 
-using materialParameters::holderOf;
-
 const char* const elasticChoices =
     "give either 'youngsModulus' and 'poissonRatio', or 'shearModulus' and 'bulkModulus' (in this "
     "dictionary or the material's)";
@@ -27,16 +25,41 @@ std::unique_ptr<ConstitutiveLaw> ConstitutiveLaw::New(const Dictionary& dict) {
     return Selector::New(dict);
 }
 
-ConstitutiveLaw::ConstitutiveLaw(const Dictionary& dict) : ConstitutiveLaw(dict, true) {}
+KeywordSchema ConstitutiveLaw::elasticKeywords() {
+    return KeywordSchema(familyName, "")
+        .scalar("rho0", "kg/m^3", "reference density rho0")
+        .greaterThan(0)
+        .orEnclosing()
+        .scalar("youngsModulus", "Pa",
+                "Young's modulus E, given with poissonRatio (or shearModulus and bulkModulus instead)")
+        .greaterThan(0)
+        .optional()
+        .orEnclosing()
+        .scalar("poissonRatio", "-", "Poisson's ratio nu, given with youngsModulus")
+        .greaterThan(-1)
+        .lessThan(0.5)
+        .optional()
+        .orEnclosing()
+        .scalar("shearModulus", "Pa",
+                "shear modulus mu, given with bulkModulus (or youngsModulus and poissonRatio instead)")
+        .greaterThan(0)
+        .optional()
+        .orEnclosing()
+        .scalar("bulkModulus", "Pa", "bulk modulus kappa, given with shearModulus")
+        .greaterThan(0)
+        .optional()
+        .orEnclosing();
+}
 
-ConstitutiveLaw::ConstitutiveLaw(const Dictionary& dict, bool elasticConstantsRequired)
+ConstitutiveLaw::ConstitutiveLaw(const Dictionary& dict, const KeywordValues& v,
+                                 bool elasticConstantsRequired)
     : type_(dict.get<std::string>("type")) {
-    rho0_ = read(dict, {"rho0", "kg/m^3", "reference density rho0", std::nullopt, 0.0, true});
+    rho0_ = v.scalar("rho0");
 
-    const Dictionary* e = holderOf(dict, "youngsModulus");
-    const Dictionary* nu = holderOf(dict, "poissonRatio");
-    const Dictionary* g = holderOf(dict, "shearModulus");
-    const Dictionary* k = holderOf(dict, "bulkModulus");
+    const auto e = v.optionalScalar("youngsModulus");
+    const auto nu = v.optionalScalar("poissonRatio");
+    const auto g = v.optionalScalar("shearModulus");
+    const auto k = v.optionalScalar("bulkModulus");
     const std::string material =
         dict.parent() ? " (law '" + dict.scope() + "', material '" + dict.parent()->scope() + "')"
                       : std::string();
@@ -50,24 +73,23 @@ ConstitutiveLaw::ConstitutiveLaw(const Dictionary& dict, bool elasticConstantsRe
     const bool moduli = g && k && !e && !nu;
     if (!engineering && !moduli) {
         std::string found;
-        for (const auto& [holder, name] : {std::pair{e, "youngsModulus"}, std::pair{nu, "poissonRatio"},
-                                           std::pair{g, "shearModulus"}, std::pair{k, "bulkModulus"}})
-            if (holder) found += (found.empty() ? "'" : ", '") + std::string(name) + "'";
-        const Dictionary& at = e ? *e : nu ? *nu : g ? *g : *k;
+        for (const auto& [given, name] :
+             {std::pair{e.has_value(), "youngsModulus"}, std::pair{nu.has_value(), "poissonRatio"},
+              std::pair{g.has_value(), "shearModulus"}, std::pair{k.has_value(), "bulkModulus"}})
+            if (given) found += (found.empty() ? "'" : ", '") + std::string(name) + "'";
+        // At the dictionary holding the first constant given: the law's own, else the material's.
+        const char* first = e ? "youngsModulus" : nu ? "poissonRatio" : g ? "shearModulus" : "bulkModulus";
+        const Dictionary& at = dict.found(first) || !dict.parent() ? dict : *dict.parent();
         throw InputError(
             at.where(), at.scope(),
             "inconsistent elastic constants" + material + ": found " + found + "; " + elasticChoices);
     }
     if (engineering) {
-        const double youngs =
-            read(dict, {"youngsModulus", "Pa", "Young's modulus E", std::nullopt, 0.0, true});
-        const double poisson = read(dict, {"poissonRatio", "-", "Poisson's ratio nu (-1 < nu < 1/2)",
-                                           std::nullopt, -1.0, true, 0.5, true});
-        mu_ = youngs / (2.0 * (1.0 + poisson));
-        kappa_ = youngs / (3.0 * (1.0 - 2.0 * poisson));
+        mu_ = *e / (2.0 * (1.0 + *nu));
+        kappa_ = *e / (3.0 * (1.0 - 2.0 * *nu));
     } else {
-        mu_ = read(dict, {"shearModulus", "Pa", "shear modulus mu", std::nullopt, 0.0, true});
-        kappa_ = read(dict, {"bulkModulus", "Pa", "bulk modulus kappa", std::nullopt, 0.0, true});
+        mu_ = *g;
+        kappa_ = *k;
     }
     elasticGiven_ = true;
 }
@@ -85,19 +107,10 @@ std::string ConstitutiveLaw::describe() const {
 }
 
 std::string ConstitutiveLaw::formatNumber(double value) {
-    return materialParameters::formatNumber(value);
-}
-
-double ConstitutiveLaw::read(const Dictionary& dict, const Keyword& key) {
-    return materialParameters::read(dict, key, "constitutiveLaw");
-}
-
-std::optional<double> ConstitutiveLaw::readOwn(const Dictionary& dict, const Keyword& key) {
-    return materialParameters::readOwn(dict, key);
-}
-
-bool ConstitutiveLaw::readSwitch(const Dictionary& dict, const char* key, bool fallback) {
-    return materialParameters::readSwitch(dict, key, fallback);
+    std::ostringstream out;
+    out.precision(10);
+    out << value;
+    return out.str();
 }
 
 }  // namespace mfdyn

@@ -14,33 +14,30 @@
 //   - pressure p = dU/dJ = kappa (J - 1) for the finite-strain laws, kappa tr(F - I) for
 //     linearElastic; energyDensity W is per unit reference volume, W(I) = 0.
 //
-// Elastic constants are read from the law's dictionary, then the enclosing material dictionary
-// (dict.parent()), as in the strength family:
+// Keywords: each law declares them once in `static KeywordSchema keywords()` (core/
+// KeywordSchema.hpp), appending elasticKeywords() (rho0 and the four elastic constants, shared by
+// every law), and reads its dictionary through it; `-describe constitutiveLaw` and
+// doc/models/constitutiveLaw/ list them. rho0 and the elastic constants may be given in the law's
+// dictionary or in the enclosing material dictionary (orEnclosing), as in the strength family:
 //
 //     materials { rubber { rho0 1100; youngsModulus 17e6; poissonRatio 0.45;
 //                          constitutiveLaw { type neoHookean; } } }
 //
-//     keyword        meaning                         unit    required
-//     rho0           reference density               kg/m^3  yes
-//     youngsModulus  E      } exactly one of the      Pa      one pair
-//     poissonRatio   nu     } two pairs                -
-//     shearModulus   mu     }                         Pa
-//     bulkModulus    kappa  }                         Pa
-//
-// with mu = E/(2(1+nu)), kappa = E/(3(1-2nu)), lambda = kappa - 2mu/3.
+// Exactly one pair of elastic constants is given, youngsModulus and poissonRatio (E, nu) or
+// shearModulus and bulkModulus (mu, kappa), with mu = E/(2(1+nu)), kappa = E/(3(1-2nu)),
+// lambda = kappa - 2mu/3.
 //
 // Laws with history (usesPlasticState()) keep the inverse plastic right Cauchy-Green tensor
 // Cp^-1 (initialised to I) and the equivalent plastic strain per particle; stress(fields, false)
 // only reads them (a Runge-Kutta stage), stress(fields, true) advances them (end of a step).
 #include "core/Dictionary.hpp"
+#include "core/KeywordSchema.hpp"
 #include "core/Registry.hpp"
 #include "core/Tensor.hpp"
-#include "materials/MaterialParameters.hpp"
 
 #include <cstddef>
 #include <limits>
 #include <memory>
-#include <optional>
 #include <string>
 
 namespace mfdyn {
@@ -70,8 +67,10 @@ public:
     using Selector = Registry<ConstitutiveLaw, const Dictionary&>;
     static std::unique_ptr<ConstitutiveLaw> New(const Dictionary& dict);
 
-    // Reads rho0 and the elastic constants (see the header comment).
-    explicit ConstitutiveLaw(const Dictionary& dict);
+    // rho0 and the elastic constants (see the header comment): the keywords every law's
+    // keywords() appends.
+    static KeywordSchema elasticKeywords();
+
     virtual ~ConstitutiveLaw();
     ConstitutiveLaw(const ConstitutiveLaw&) = delete;
     ConstitutiveLaw& operator=(const ConstitutiveLaw&) = delete;
@@ -106,20 +105,14 @@ public:
     std::string describe() const;
 
 protected:
-    // A scalar keyword, declared once, read and bounds-checked through it.
-    using Keyword = MaterialKeyword;  // materials/MaterialParameters.hpp
+    // Reads rho0 and the elastic constants from the values read through the law's schema (which
+    // appends elasticKeywords()) and checks that exactly one pair of constants is given. With
+    // elasticConstantsRequired false (mooneyRivlin, which can derive them from its own parameters),
+    // mu and kappa stay NaN when none of the four keywords is given, and the derived class sets them.
+    ConstitutiveLaw(const Dictionary& dict, const KeywordValues& values,
+                    bool elasticConstantsRequired = true);
 
-    // For laws that can derive the elastic constants from their own parameters (mooneyRivlin):
-    // with elasticConstantsRequired false, mu and kappa stay NaN when none of the four keywords
-    // is given, and the derived class sets them.
-    ConstitutiveLaw(const Dictionary& dict, bool elasticConstantsRequired);
-
-    // Value of `key` from `dict`, else the material dictionary, else its default; InputError naming
-    // the keyword, unit and meaning when missing or out of bounds.
-    static double read(const Dictionary& dict, const Keyword& key);
-    // The same, from `dict` only; nullopt when absent.
-    static std::optional<double> readOwn(const Dictionary& dict, const Keyword& key);
-    static bool readSwitch(const Dictionary& dict, const char* key, bool fallback);
+    // Ten significant digits, for messages and describeParameters().
     static std::string formatNumber(double value);
     // Model parameters beyond rho0, mu, kappa for describe(): ", yieldStress 2.5e+08".
     virtual std::string describeParameters() const { return {}; }

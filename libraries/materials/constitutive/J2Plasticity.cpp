@@ -57,10 +57,23 @@ double isochoricTrace(const Tensor<3>& d, double start) {
 
 }  // namespace
 
-J2Plasticity::J2Plasticity(const Dictionary& dict)
-    : ConstitutiveLaw(dict),
-      yield0_(read(dict, {"yieldStress", "Pa", "initial yield stress sigma_Y0", std::nullopt, 0.0, true})),
-      hardening_(read(dict, {"hardeningModulus", "Pa", "linear isotropic hardening modulus H", 0.0, 0.0})) {}
+KeywordSchema J2Plasticity::keywords() {
+    return KeywordSchema(familyName, "j2Plasticity")
+        .append(elasticKeywords())
+        .scalar("yieldStress", "Pa", "initial yield stress sigma_Y0")
+        .greaterThan(0)
+        .orEnclosing()
+        .scalar("hardeningModulus", "Pa",
+                "linear isotropic hardening modulus H, slope of sigma_Y against eps_p")
+        .atLeast(0)
+        .orDefault(0.0)
+        .orEnclosing();
+}
+
+J2Plasticity::J2Plasticity(const Dictionary& dict) : J2Plasticity(dict, keywords().read(dict)) {}
+
+J2Plasticity::J2Plasticity(const Dictionary& dict, const KeywordValues& v)
+    : ConstitutiveLaw(dict, v), yield0_(v.scalar("yieldStress")), hardening_(v.scalar("hardeningModulus")) {}
 
 void J2Plasticity::stress(const Fields& f, bool updateState) const {
     if (f.size > 0 && (!f.plasticState || !f.plasticStrain))

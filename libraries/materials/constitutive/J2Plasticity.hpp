@@ -7,11 +7,6 @@
 //                             yieldStress 250e6;
 //                             constitutiveLaw { type j2Plasticity; hardeningModulus 700e6; } } }
 //
-//     keyword           meaning                                      unit  required  default
-//     yieldStress       sigma_Y0, the initial flow stress            Pa    yes
-//     hardeningModulus  H, slope of sigma_Y against eps_p            Pa    no        0
-//     (and rho0 with the elastic constants, see ConstitutiveLaw.hpp)
-//
 // Plastic state per particle: Cp^-1 (initialise to I) and eps_p (initialise to 0).
 #include "materials/constitutive/ConstitutiveLaw.hpp"
 
@@ -20,6 +15,7 @@ namespace mfdyn {
 class J2Plasticity : public ConstitutiveLaw {
 public:
     explicit J2Plasticity(const Dictionary& dict);
+    static KeywordSchema keywords();
     void stress(const Fields& fields, bool updateState) const override;
     bool usesPlasticState() const override { return true; }
 
@@ -30,6 +26,8 @@ protected:
     std::string describeParameters() const override;
 
 private:
+    J2Plasticity(const Dictionary& dict, const KeywordValues& values);
+
     double yield0_ = 0.0;
     double hardening_ = 0.0;
 };

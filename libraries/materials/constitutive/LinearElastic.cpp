@@ -13,7 +13,11 @@
 
 namespace mfdyn {
 
-LinearElastic::LinearElastic(const Dictionary& dict) : ConstitutiveLaw(dict) {}
+KeywordSchema LinearElastic::keywords() {
+    return KeywordSchema(familyName, "linearElastic").append(elasticKeywords());
+}
+
+LinearElastic::LinearElastic(const Dictionary& dict) : ConstitutiveLaw(dict, keywords().read(dict)) {}
 
 void LinearElastic::stress(const Fields& f, bool) const {
     const double lambda = lameLambda();

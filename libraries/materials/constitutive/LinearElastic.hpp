@@ -5,8 +5,6 @@
 //
 //     materials { steel { rho0 7000; youngsModulus 21e9; poissonRatio 0.3;
 //                         constitutiveLaw { type linearElastic; } } }
-//
-// Keywords: rho0 and the elastic constants only (see ConstitutiveLaw.hpp).
 #include "materials/constitutive/ConstitutiveLaw.hpp"
 
 namespace mfdyn {
@@ -14,6 +12,8 @@ namespace mfdyn {
 class LinearElastic : public ConstitutiveLaw {
 public:
     explicit LinearElastic(const Dictionary& dict);
+    // rho0 and the elastic constants only (ConstitutiveLaw::elasticKeywords()).
+    static KeywordSchema keywords();
     void stress(const Fields& fields, bool updateState) const override;
 };
 

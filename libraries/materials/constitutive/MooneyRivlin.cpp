@@ -30,21 +30,41 @@ const double sqrt3 = std::sqrt(3.0);
 
 }  // namespace
 
-MooneyRivlin::MooneyRivlin(const Dictionary& dict) : ConstitutiveLaw(dict, false) {
-    const auto zeta =
-        readOwn(dict, {"zeta", "Pa", "Mooney-Rivlin coefficient zeta of J^-2/3 F:F", std::nullopt, 0.0});
-    const auto xi =
-        readOwn(dict, {"xi", "Pa", "Mooney-Rivlin coefficient xi of J^-2 (H:H)^3/2", std::nullopt, 0.0});
-    const auto kappa = readOwn(dict, {"kappa", "Pa", "bulk modulus kappa of U(J)", std::nullopt, 0.0, true});
-    const bool hDominated = readSwitch(dict, "hDominated", false);
+KeywordSchema MooneyRivlin::keywords() {
+    return KeywordSchema(familyName, "mooneyRivlin")
+        .append(elasticKeywords())
+        .scalar("zeta", "Pa",
+                "Mooney-Rivlin coefficient zeta of J^-2/3 F:F; zeta, xi or both unless hDominated, with "
+                "2 zeta + 3 sqrt(3) xi = mu when the elastic constants are given")
+        .atLeast(0)
+        .optional()
+        .scalar("xi", "Pa", "Mooney-Rivlin coefficient xi of J^-2 (H:H)^3/2")
+        .atLeast(0)
+        .optional()
+        .scalar("kappa", "Pa",
+                "bulk modulus kappa of U(J); default: that of the elastic constants, required without them")
+        .greaterThan(0)
+        .optional()
+        .flag("hDominated", "zeta = 0, xi = mu/(3 sqrt 3) (Lee et al. 2016, section 8.7)")
+        .orDefault(false)
+        .orEnclosing();
+}
+
+MooneyRivlin::MooneyRivlin(const Dictionary& dict) : MooneyRivlin(dict, keywords().read(dict)) {}
+
+MooneyRivlin::MooneyRivlin(const Dictionary& dict, const KeywordValues& v) : ConstitutiveLaw(dict, v, false) {
+    const auto zeta = v.optionalScalar("zeta");
+    const auto xi = v.optionalScalar("xi");
+    const auto kappa = v.optionalScalar("kappa");
+    const bool hDominated = v.flag("hDominated");
     const double mu = shearModulus();
     const std::string sum = "2 zeta + 3 sqrt(3) xi";
 
     if (hDominated) {
         if (zeta || xi)
-            throw dict.error(zeta ? "zeta" : "xi",
-                             "hDominated yes sets zeta = 0 and xi = mu/(3 sqrt 3); give "
-                             "either hDominated or zeta/xi, not both");
+            throw v.error(zeta ? "zeta" : "xi",
+                          "hDominated yes sets zeta = 0 and xi = mu/(3 sqrt 3); give "
+                          "either hDominated or zeta/xi, not both");
         if (!elasticConstantsGiven())
             throw InputError(dict.where(), dict.scope(),
                              "hDominated yes needs the shear modulus: give either 'youngsModulus' and "
@@ -62,30 +82,29 @@ MooneyRivlin::MooneyRivlin(const Dictionary& dict) : ConstitutiveLaw(dict, false
             xi_ = *xi;
             const double given = 2.0 * zeta_ + 3.0 * sqrt3 * xi_;
             if (!(std::abs(given - mu) <= 1e-6 * mu))
-                throw dict.error("zeta", sum + " = " + formatNumber(given) +
-                                             " differs from the shear modulus mu = " + formatNumber(mu) +
-                                             " of the elastic constants (relative tolerance 1e-6)");
+                throw v.error("zeta", sum + " = " + formatNumber(given) +
+                                          " differs from the shear modulus mu = " + formatNumber(mu) +
+                                          " of the elastic constants (relative tolerance 1e-6)");
         } else if (zeta) {
             // A zeta of mu/2 as printed to a few digits leaves xi a rounding below 0: clip.
             zeta_ = *zeta;
             xi_ = std::max(0.0, (mu - 2.0 * zeta_) / (3.0 * sqrt3));
             if (2.0 * zeta_ > mu * (1.0 + 1e-6))
-                throw dict.error("zeta", "expected zeta <= mu/2 = " + formatNumber(mu / 2) +
-                                             " (xi = (mu - 2 zeta)/(3 sqrt 3) >= 0), found " +
-                                             formatNumber(zeta_));
+                throw v.error("zeta", "expected zeta <= mu/2 = " + formatNumber(mu / 2) +
+                                          " (xi = (mu - 2 zeta)/(3 sqrt 3) >= 0), found " +
+                                          formatNumber(zeta_));
         } else {
             xi_ = *xi;
             zeta_ = std::max(0.0, (mu - 3.0 * sqrt3 * xi_) / 2.0);
             if (3.0 * sqrt3 * xi_ > mu * (1.0 + 1e-6))
-                throw dict.error("xi", "expected xi <= mu/(3 sqrt 3) = " + formatNumber(mu / (3 * sqrt3)) +
-                                           " (zeta = (mu - 3 sqrt(3) xi)/2 >= 0), found " +
-                                           formatNumber(xi_));
+                throw v.error("xi", "expected xi <= mu/(3 sqrt 3) = " + formatNumber(mu / (3 * sqrt3)) +
+                                        " (zeta = (mu - 3 sqrt(3) xi)/2 >= 0), found " + formatNumber(xi_));
         }
     } else {
         zeta_ = zeta.value_or(0.0);
         xi_ = xi.value_or(0.0);
         mu_ = 2.0 * zeta_ + 3.0 * sqrt3 * xi_;
-        if (!(mu_ > 0.0)) throw dict.error(zeta ? "zeta" : "xi", "expected " + sum + " = mu > 0, found 0");
+        if (!(mu_ > 0.0)) throw v.error(zeta ? "zeta" : "xi", "expected " + sum + " = mu > 0, found 0");
     }
 
     if (kappa)

@@ -6,12 +6,6 @@
 //     materials { rubber { rho0 1100; youngsModulus 17e6; poissonRatio 0.495;
 //                          constitutiveLaw { type mooneyRivlin; zeta 2e6; } } }
 //
-//     keyword     meaning                                         unit  required  default
-//     zeta        coefficient of the F:F term                     Pa    see below
-//     xi          coefficient of the (H:H)^3/2 term               Pa    see below
-//     kappa       bulk modulus of U(J)                            Pa    no        bulkModulus
-//     hDominated  zeta = 0, xi = mu/(3 sqrt 3) (Lee 2016 s. 8.7)  -     no        no
-//
 // zeta, xi and kappa are read from this dictionary only. At least one of zeta and xi (or
 // hDominated yes) is required. With the material's elastic constants, 2 zeta + 3 sqrt(3) xi = mu
 // must hold (relative 1e-6) and a missing one of zeta, xi is derived from it; without them the
@@ -23,6 +17,7 @@ namespace mfdyn {
 class MooneyRivlin : public ConstitutiveLaw {
 public:
     explicit MooneyRivlin(const Dictionary& dict);
+    static KeywordSchema keywords();
     void stress(const Fields& fields, bool updateState) const override;
 
     double zeta() const { return zeta_; }
@@ -36,6 +31,8 @@ protected:
     std::string describeParameters() const override;
 
 private:
+    MooneyRivlin(const Dictionary& dict, const KeywordValues& values);
+
     double zeta_ = 0.0;
     double xi_ = 0.0;
 };

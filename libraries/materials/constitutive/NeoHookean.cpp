@@ -17,7 +17,11 @@
 
 namespace mfdyn {
 
-NeoHookean::NeoHookean(const Dictionary& dict) : ConstitutiveLaw(dict) {}
+KeywordSchema NeoHookean::keywords() {
+    return KeywordSchema(familyName, "neoHookean").append(elasticKeywords());
+}
+
+NeoHookean::NeoHookean(const Dictionary& dict) : ConstitutiveLaw(dict, keywords().read(dict)) {}
 
 void NeoHookean::stress(const Fields& f, bool) const {
     MooneyRivlin::evaluate(0.5 * mu_, 0.0, kappa_, f);

@@ -4,8 +4,6 @@
 //
 //     materials { rubber { rho0 1100; youngsModulus 17e6; poissonRatio 0.45;
 //                          constitutiveLaw { type neoHookean; } } }
-//
-// Keywords: rho0 and the elastic constants only (see ConstitutiveLaw.hpp).
 #include "materials/constitutive/ConstitutiveLaw.hpp"
 
 namespace mfdyn {
@@ -13,6 +11,8 @@ namespace mfdyn {
 class NeoHookean : public ConstitutiveLaw {
 public:
     explicit NeoHookean(const Dictionary& dict);
+    // rho0 and the elastic constants only (ConstitutiveLaw::elasticKeywords()).
+    static KeywordSchema keywords();
     void stress(const Fields& fields, bool updateState) const override;
 };
 
