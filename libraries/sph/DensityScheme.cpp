@@ -1,14 +1,22 @@
+// The densityScheme family's shared keywords (the schemes are in their own files).
 #include "sph/DensityScheme.hpp"
 
 namespace mfdyn {
 
-DensityScheme::DensityScheme(const Dictionary& dict) {
-    const std::string form = dict.getOrDefault<std::string>("form", "continuity");
-    if (form != "continuity" && form != "summation")
-        throw dict.error("form", "'" + form + "' is not a valid form; valid choices: continuity | summation");
-    summation_ = form == "summation";
-    gradH_ = dict.getOrDefault<bool>("gradH", true);
+KeywordSchema DensityScheme::commonKeywords(const char* type) {
+    return KeywordSchema(familyName, type)
+        .word("form", {"continuity", "summation"}, "density by the continuity equation or by the summation")
+        .orDefault("continuity")
+        .flag("gradH", "the grad-h factor omega in the continuity, momentum and energy equations")
+        .orDefault(true)
+        .scalar("omegaMin", "-", "floor of omega (at free surfaces the sum behind it loses its far half)")
+        .greaterThan(0)
+        .atMost(1)
+        .orDefault(0.5);
 }
+
+DensityScheme::DensityScheme(const KeywordValues& v)
+    : summation_(v.word("form") == "summation"), gradH_(v.flag("gradH")), omegaMin_(v.scalar("omegaMin")) {}
 
 DensityScheme::~DensityScheme() = default;
 

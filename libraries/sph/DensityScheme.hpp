@@ -2,7 +2,7 @@
 // The smoothed-density scheme of an SPH discretisation (Zisis 2017 §3–4; sph-impact.md §2), chosen
 // by name, with the momentum and energy equations matched to it variationally:
 //
-//     densityScheme { type number; form continuity; gradH yes; }
+//     densityScheme { type number; form continuity; gradH yes; omegaMin 0.5; }
 //
 // All three measures share one algebraic shape, with per-particle coefficients a_i, b_i, c_i:
 //
@@ -18,7 +18,10 @@
 //     volume       m_i/ρ_i      m_j/ρ_j     ρ_i     (colour-function measure)
 //
 // The momentum sum is antisymmetric in i, j, so linear momentum is conserved to round-off for
-// every scheme; with ω the energy equation is exactly the work of the pressure forces.
+// every scheme; with ω the energy equation is exactly the work of the pressure forces. ω is
+// floored at omegaMin (at a free surface the sum behind it loses its far half). The keywords
+// form, gradH and omegaMin are common to the schemes (commonKeywords); doc/models/densityScheme/.
+#include "core/KeywordSchema.hpp"
 #include "core/Registry.hpp"
 
 #include <cstddef>
@@ -32,7 +35,6 @@ public:
     using Selector = Registry<DensityScheme, const Dictionary&>;
     static std::unique_ptr<DensityScheme> New(const Dictionary& dict) { return Selector::New(dict); }
 
-    explicit DensityScheme(const Dictionary& dict);
     virtual ~DensityScheme();
 
     // a, b, c for n particles.
@@ -43,10 +45,18 @@ public:
 
     bool summation() const { return summation_; }
     bool gradH() const { return gradH_; }
+    // The floor of the grad-h factor ω.
+    double omegaMin() const { return omegaMin_; }
+
+protected:
+    explicit DensityScheme(const KeywordValues& v);
+    // form, gradH and omegaMin, declared for the scheme `type`.
+    static KeywordSchema commonKeywords(const char* type);
 
 private:
     bool summation_;
     bool gradH_;
+    double omegaMin_;
 };
 
 }  // namespace mfdyn

@@ -4,10 +4,14 @@
 
 namespace mfdyn {
 
-MassScheme::MassScheme(const Dictionary& dict) : DensityScheme(dict) {
+KeywordSchema MassScheme::keywords() {
+    return commonKeywords("mass");
 }
 
-void MassScheme::coefficients(std::size_t n, const double* m, const double* rho, double* a, double* b, double* c) const {
+MassScheme::MassScheme(const Dictionary& dict) : DensityScheme(keywords().read(dict)) {}
+
+void MassScheme::coefficients(std::size_t n, const double* m, const double* rho, double* a, double* b,
+                              double* c) const {
     for (std::size_t i = 0; i < n; ++i) a[i] = m[i] / (rho[i] * rho[i]), b[i] = m[i], c[i] = 1.0;
 }
 

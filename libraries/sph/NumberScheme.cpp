@@ -5,16 +5,21 @@
 
 namespace mfdyn {
 
-NumberScheme::NumberScheme(const Dictionary& dict) : DensityScheme(dict) {
+KeywordSchema NumberScheme::keywords() {
+    return commonKeywords("number");
 }
 
-void NumberScheme::coefficients(std::size_t n, const double* m, const double* rho, double* a, double* b, double* c) const {
+NumberScheme::NumberScheme(const Dictionary& dict) : DensityScheme(keywords().read(dict)) {}
+
+void NumberScheme::coefficients(std::size_t n, const double* m, const double* rho, double* a, double* b,
+                                double* c) const {
     for (std::size_t i = 0; i < n; ++i) {
-            const double ratio = m[i] / rho[i];
-            a[i] = ratio * ratio, b[i] = 1.0, c[i] = m[i];
-        }
+        const double ratio = m[i] / rho[i];
+        a[i] = ratio * ratio, b[i] = 1.0, c[i] = m[i];
+    }
 }
 
-MFDYN_REGISTER(DensityScheme, NumberScheme, "number", "rho = m sum W (number measure, Hu & Adams), momentum/energy matched");
+MFDYN_REGISTER(DensityScheme, NumberScheme, "number",
+               "rho = m sum W (number measure, Hu & Adams), momentum/energy matched");
 
 }  // namespace mfdyn

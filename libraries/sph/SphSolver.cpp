@@ -101,7 +101,7 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
       hLaw_(SmoothingLengthLaw::New(properties_.subDict("smoothingLength"))),
       diss_(Dissipation::New(properties_.subDict("dissipation"))->parameters()),
       densityRateLimit_(properties_.getOrDefault<double>("densityRateLimit", 0.0)),
-      omegaMin_(properties_.subDict("densityScheme").getOrDefault<double>("omegaMin", 0.5)),
+      omegaMin_(scheme_->omegaMin()),
       differenceForm_(readMomentumForm(properties_)),
       predictorCorrector_(readIntegrator(properties_)),
       x_(particles_->position()),

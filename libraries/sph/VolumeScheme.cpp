@@ -5,14 +5,24 @@
 
 namespace mfdyn {
 
-VolumeScheme::VolumeScheme(const Dictionary& dict) : DensityScheme(dict) {
-    if (summation()) throw dict.error("form", "the volume scheme's summation is implicit in the density; use form continuity");
+KeywordSchema VolumeScheme::keywords() {
+    return commonKeywords("volume");
 }
 
-void VolumeScheme::coefficients(std::size_t n, const double* m, const double* rho, double* a, double* b, double* c) const {
+VolumeScheme::VolumeScheme(const Dictionary& dict) : VolumeScheme(keywords().read(dict)) {}
+
+VolumeScheme::VolumeScheme(const KeywordValues& v) : DensityScheme(v) {
+    if (summation())
+        throw v.error("form",
+                      "the volume scheme's summation is implicit in the density; use form continuity");
+}
+
+void VolumeScheme::coefficients(std::size_t n, const double* m, const double* rho, double* a, double* b,
+                                double* c) const {
     for (std::size_t i = 0; i < n; ++i) a[i] = m[i] / rho[i], b[i] = m[i] / rho[i], c[i] = rho[i];
 }
 
-MFDYN_REGISTER(DensityScheme, VolumeScheme, "volume", "rho = rho sum (m/rho) W (volume measure), continuity form, momentum/energy matched");
+MFDYN_REGISTER(DensityScheme, VolumeScheme, "volume",
+               "rho = rho sum (m/rho) W (volume measure), continuity form, momentum/energy matched");
 
 }  // namespace mfdyn
