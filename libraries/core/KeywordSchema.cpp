@@ -58,7 +58,7 @@ std::string Keyword::typeText() const {
         case Type::word:
             return "one of " + joinWords(words);
         case Type::vector:
-            return "a list of reals (...)";
+            return length ? "a list of " + std::to_string(length) + " reals (...)" : "a list of reals (...)";
         case Type::switchValue:
             return "a switch (yes/no)";
         case Type::dictionary:
@@ -95,8 +95,11 @@ std::string Keyword::sampleValue() const {
             return words.empty() ? "name" : words.front();
         case Type::switchValue:
             return "no";
-        case Type::vector:
-            return "(0 0 0)";
+        case Type::vector: {
+            std::string zeros = "(";
+            for (std::size_t i = 0; i < (length ? length : 3); ++i) zeros += i ? " 0" : "0";
+            return zeros + ")";
+        }
         case Type::dictionary:
             return "{ }";
         case Type::integer:
@@ -217,6 +220,8 @@ KeywordSchema& KeywordSchema::orDefault(const std::vector<double>& value) {
             throw std::logic_error(family_ + " " + type_ + ": default of " + k.name + " outside its bounds");
         text += (i ? " " : "") + formatNumber(value[i]);
     }
+    if (k.length && value.size() != k.length)
+        throw std::logic_error(family_ + " " + type_ + ": default of " + k.name + " has another length");
     k.kind = Keyword::Kind::defaulted;
     k.defaultValue = text + ")";
     k.defaultList = value;
@@ -245,6 +250,16 @@ KeywordSchema& KeywordSchema::lessThan(double bound) {
 
 KeywordSchema& KeywordSchema::atMost(double bound) {
     last("atMost").upper = KeywordBound{bound, false};
+    return *this;
+}
+
+KeywordSchema& KeywordSchema::ofLength(std::size_t components) {
+    Keyword& k = last("ofLength");
+    if (k.type != Keyword::Type::vector)
+        throw std::logic_error(family_ + " " + type_ + ": length of the non-vector keyword " + k.name);
+    if (k.kind == Keyword::Kind::defaulted && k.defaultList.size() != components)
+        throw std::logic_error(family_ + " " + type_ + ": default of " + k.name + " has another length");
+    k.length = components;
     return *this;
 }
 
@@ -377,6 +392,9 @@ KeywordValues KeywordSchema::read(const Dictionary& dict) const {
             }
             case Keyword::Type::vector:
                 v.list = from.get<std::vector<double>>(k.name);
+                if (k.length && v.list.size() != k.length)
+                    throw from.error(k.name, "expected " + std::to_string(k.length) + " values (" +
+                                                 k.meaning + "), found " + std::to_string(v.list.size()));
                 for (double x : v.list)
                     if (!std::isfinite(x) || !inside(k, x))
                         throw from.error(k.name, "expected components " + k.boundsText() + unit + ", found " +

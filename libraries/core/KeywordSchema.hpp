@@ -56,6 +56,7 @@ struct Keyword {
     std::string defaultValue;         // as written in a dictionary: "7", "cubic", "yes"
     double defaultNumber = 0.0;       // the default of a scalar or integer, exactly
     std::vector<double> defaultList;  // the default of a vector
+    std::size_t length = 0;           // the number of components of a vector; 0: any
     std::vector<std::string> words;   // the valid words of Type::word
     std::optional<KeywordBound> lower, upper;
     bool orEnclosing = false;
@@ -102,6 +103,7 @@ public:
     KeywordSchema& lessThan(double bound);
     KeywordSchema& atMost(double bound);
     KeywordSchema& orEnclosing();
+    KeywordSchema& ofLength(std::size_t components);  // a vector of exactly this many values
 
     // The keywords of `other` (a base model's), after those declared so far.
     KeywordSchema& append(const KeywordSchema& other);

@@ -36,11 +36,6 @@ public:
     // The pair terms are evaluated inside the solver's force loop (a virtual call per pair would
     // cost more than the terms); a model states its parameters.
     virtual DissipationParameters parameters() const = 0;
-
-protected:
-    // An `(a b)` entry of a schema-read vector keyword: a coefficient and a signal-velocity
-    // factor. Any other length is an InputError at the entry.
-    static void coefficientPair(const KeywordValues& v, const char* name, double& a, double& b);
 };
 
 }  // namespace mfdyn

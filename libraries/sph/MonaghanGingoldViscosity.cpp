@@ -24,6 +24,7 @@ KeywordSchema MonaghanGingoldViscosity::keywords() {
         .orDefault(false)
         .vector("density", "-", "(a_rho b_rho): artificial mass flux on the pressure jump (riemann Eq. 4.26)")
         .atLeast(0)
+        .ofLength(2)
         .orDefault(std::vector<double>{0.0, 0.0});
 }
 
@@ -33,7 +34,8 @@ MonaghanGingoldViscosity::MonaghanGingoldViscosity(const Dictionary& dict) : Dis
     p_.alpha = v.scalar("alpha");
     p_.beta = v.scalar("beta");
     p_.balsara = v.flag("balsara");
-    coefficientPair(v, "density", p_.arho, p_.brho);
+    p_.arho = v.vector("density")[0];
+    p_.brho = v.vector("density")[1];
 }
 
 MFDYN_REGISTER(Dissipation, MonaghanGingoldViscosity, "monaghanGingold",

@@ -20,12 +20,15 @@ KeywordSchema RiemannDissipation::keywords() {
     return KeywordSchema(familyName, "riemann")
         .vector("velocity", "-", "(a_v b_v): viscosity and viscous heating, coefficient and signal factor")
         .atLeast(0)
+        .ofLength(2)
         .orDefault(std::vector<double>{1.0, 2.0})
         .vector("density", "-", "(a_rho b_rho): artificial mass flux on the pressure jump")
         .atLeast(0)
+        .ofLength(2)
         .orDefault(std::vector<double>{0.5, 2.0})
         .vector("energy", "-", "(a_e b_e): conduction of specific internal energy")
         .atLeast(0)
+        .ofLength(2)
         .orDefault(std::vector<double>{0.1, 2.0})
         .word("signal", {"riemann", "alternative"}, "signal velocity: Eq. 4.22 (riemann) or Eq. 4.24")
         .orDefault("riemann")
@@ -36,9 +39,12 @@ KeywordSchema RiemannDissipation::keywords() {
 RiemannDissipation::RiemannDissipation(const Dictionary& dict) : Dissipation(dict) {
     const KeywordValues v = keywords().read(dict);
     p_.kind = DissipationParameters::Kind::riemann;
-    coefficientPair(v, "velocity", p_.av, p_.bv);
-    coefficientPair(v, "density", p_.arho, p_.brho);
-    coefficientPair(v, "energy", p_.ae, p_.be);
+    p_.av = v.vector("velocity")[0];
+    p_.bv = v.vector("velocity")[1];
+    p_.arho = v.vector("density")[0];
+    p_.brho = v.vector("density")[1];
+    p_.ae = v.vector("energy")[0];
+    p_.be = v.vector("energy")[1];
     p_.alternativeSignal = v.word("signal") == "alternative";
     p_.allPairs = v.word("pairs") == "all";
 }

@@ -5,9 +5,14 @@
 
 namespace mfdyn {
 
+KeywordSchema ArtificialViscosity::keywords() {
+    return KeywordSchema(familyName, "artificialViscosity")
+        .scalar("viscosity", "Pa s", "mu_vis of the viscous stress (mu_vis/rho0) grad0 p")
+        .atLeast(0);
+}
+
 ArtificialViscosity::ArtificialViscosity(const Dictionary& dict) {
-    c_.viscosity = dict.get<double>("viscosity");
-    if (!(c_.viscosity >= 0)) throw dict.error("viscosity", "viscosity must be non-negative");
+    c_.viscosity = keywords().read(dict).scalar("viscosity");
 }
 
 std::string ArtificialViscosity::describe() const {

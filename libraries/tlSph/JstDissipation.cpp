@@ -13,22 +13,24 @@
 
 namespace mfdyn {
 
-namespace {
-
-void readPair(const Dictionary& dict, const char* key, double& eps2, double& eps4) {
-    if (!dict.found(key)) return;
-    const auto v = dict.get<std::vector<double>>(key);
-    if (v.size() != 2) throw dict.error(key, "expected (eps2 eps4), two non-negative numbers");
-    if (v[0] < 0 || v[1] < 0) throw dict.error(key, "JST coefficients must be non-negative");
-    eps2 = v[0], eps4 = v[1];
+KeywordSchema JstDissipation::keywords() {
+    return KeywordSchema(familyName, "jst")
+        .vector("momentum", "-", "(eps2_p eps4_p): Laplacian and bi-Laplacian coefficients on p")
+        .atLeast(0)
+        .ofLength(2)
+        .orDefault(std::vector<double>{0.0, 0.125})
+        .vector("jacobian", "-", "(eps2_J eps4_J): Laplacian and bi-Laplacian coefficients on J")
+        .atLeast(0)
+        .ofLength(2)
+        .orDefault(std::vector<double>{0.0, 0.0});
 }
 
-}  // namespace
-
 JstDissipation::JstDissipation(const Dictionary& dict) {
-    c_.momentum4 = 0.125;
-    readPair(dict, "momentum", c_.momentum2, c_.momentum4);
-    readPair(dict, "jacobian", c_.jacobian2, c_.jacobian4);
+    const KeywordValues v = keywords().read(dict);
+    c_.momentum2 = v.vector("momentum")[0];
+    c_.momentum4 = v.vector("momentum")[1];
+    c_.jacobian2 = v.vector("jacobian")[0];
+    c_.jacobian4 = v.vector("jacobian")[1];
 }
 
 std::string JstDissipation::describe() const {

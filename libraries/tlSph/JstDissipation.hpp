@@ -5,6 +5,7 @@ namespace mfdyn {
 
 class JstDissipation final : public TlDissipation {
 public:
+    static KeywordSchema keywords();
     explicit JstDissipation(const Dictionary& dict);
     TlDissipationCoefficients coefficients() const override { return c_; }
     std::string describe() const override;

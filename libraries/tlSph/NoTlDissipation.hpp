@@ -6,7 +6,8 @@ namespace mfdyn {
 // No dissipation: the unstabilised mixed SPH (hourglass modes and shock oscillations left alone).
 class NoTlDissipation final : public TlDissipation {
 public:
-    explicit NoTlDissipation(const Dictionary&) {}
+    static KeywordSchema keywords() { return KeywordSchema(familyName, "none"); }
+    explicit NoTlDissipation(const Dictionary& dict) { keywords().read(dict); }
     TlDissipationCoefficients coefficients() const override { return {}; }
     std::string describe() const override { return "none"; }
 };

@@ -11,6 +11,7 @@
 // artificialViscosity (Remark 6): P_vis = (mu_vis/rho0) grad0 p, i.e. D(p) = (mu_vis/rho0) L[p].
 // L is the corrected Laplacian, h the particle spacing, c_p the largest p-wave speed.
 // The terms are evaluated in the solver's loops; a model states its coefficients.
+#include "core/KeywordSchema.hpp"
 #include "core/Registry.hpp"
 
 #include <memory>
