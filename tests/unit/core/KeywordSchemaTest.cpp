@@ -234,3 +234,36 @@ TEST(KeywordSchema, RegistrationCarriesSchemaAndSourceFile) {
     EXPECT_TRUE(contains(RegistryIndex::global().describe("widgetForTest"), "lever"));
     EXPECT_THROW(RegistryIndex::global().describe("sprng"), InputError);
 }
+
+TEST(KeywordSchema, VectorDefaultsAndLength) {
+    const KeywordSchema schema = KeywordSchema("widgetForTest", "pair")
+                                     .vector("coefficients", "-", "(a b)")
+                                     .atLeast(0)
+                                     .ofLength(2)
+                                     .orDefault(std::vector<double>{0.5, 2.0})
+                                     .vector("anyLength", "m", "a list")
+                                     .optional();
+    const Keyword* pair = schema.find("coefficients");
+    ASSERT_NE(pair, nullptr);
+    EXPECT_EQ(pair->defaultValue, "(0.5 2)");
+    EXPECT_EQ(pair->typeText(), "a list of 2 reals (...)");
+    const Dictionary defaults = Dictionary::parse("type pair;", "pair");
+    EXPECT_EQ(schema.read(defaults).vector("coefficients"), (std::vector<double>{0.5, 2.0}));
+    const Dictionary given = Dictionary::parse("type pair; coefficients (1 3); anyLength (1 2 3 4);", "pair");
+    const KeywordValues v = schema.read(given);
+    EXPECT_EQ(v.vector("coefficients"), (std::vector<double>{1.0, 3.0}));
+    EXPECT_EQ(v.vector("anyLength").size(), 4u);
+    const std::string wrongLength =
+        messageOf([&] { schema.read(Dictionary::parse("coefficients (1 2 3);", "pair")); });
+    EXPECT_NE(wrongLength.find("keyword 'coefficients'"), std::string::npos) << wrongLength;
+    EXPECT_NE(wrongLength.find("expected 2 values"), std::string::npos) << wrongLength;
+    const std::string negative =
+        messageOf([&] { schema.read(Dictionary::parse("coefficients (1 -2);", "pair")); });
+    EXPECT_NE(negative.find(">= 0"), std::string::npos) << negative;
+    // A default of another length than declared is a programming error.
+    EXPECT_THROW(KeywordSchema("widgetForTest", "bad")
+                     .vector("c", "-", "c")
+                     .ofLength(2)
+                     .orDefault(std::vector<double>{1.0}),
+                 std::logic_error);
+}
