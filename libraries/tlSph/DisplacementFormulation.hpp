@@ -8,7 +8,9 @@ namespace mfdyn {
 
 class DisplacementFormulation final : public Formulation {
 public:
-    explicit DisplacementFormulation(const Dictionary&) {}
+    // No keywords: the formulation is its name.
+    static KeywordSchema keywords() { return KeywordSchema(familyName, "displacement"); }
+    explicit DisplacementFormulation(const Dictionary& dict) { keywords().read(dict); }
     std::string name() const override { return "displacement"; }
     bool evolvesF() const override { return false; }
     bool evolvesH() const override { return false; }

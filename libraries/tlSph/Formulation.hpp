@@ -13,6 +13,7 @@
 //
 // The solver asks only which fields a formulation evolves; the update rules are the solver's
 // (dF/dt = G, dH/dt = F x G, dJ/dt = H : G with G = grad~ v).
+#include "core/KeywordSchema.hpp"
 #include "core/Registry.hpp"
 
 #include <memory>

@@ -8,8 +8,11 @@ namespace mfdyn {
 template <bool EvolveH, bool EvolveJ>
 class MixedFormulation final : public Formulation {
 public:
-    explicit MixedFormulation(const Dictionary&) {}
-    std::string name() const override { return EvolveH ? "pFHJ" : EvolveJ ? "pFJ" : "pF"; }
+    static constexpr const char* typeName = EvolveH ? "pFHJ" : EvolveJ ? "pFJ" : "pF";
+    // No keywords: the formulation is its name.
+    static KeywordSchema keywords() { return KeywordSchema(familyName, typeName); }
+    explicit MixedFormulation(const Dictionary& dict) { keywords().read(dict); }
+    std::string name() const override { return typeName; }
     bool evolvesF() const override { return true; }
     bool evolvesH() const override { return EvolveH; }
     bool evolvesJ() const override { return EvolveJ; }
