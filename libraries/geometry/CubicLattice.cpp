@@ -7,7 +7,12 @@
 
 namespace mfdyn {
 
-CubicLattice::CubicLattice(const Dictionary& dict, int dimension) : Lattice(dict, dimension) {}
+KeywordSchema CubicLattice::keywords() {
+    return commonKeywords("cubic");
+}
+
+CubicLattice::CubicLattice(const Dictionary& dict, int dimension)
+    : Lattice(keywords().read(dict), dimension) {}
 
 std::vector<double> CubicLattice::sites(const BoundingBox& box) const {
     const int dim = dimension();

@@ -5,6 +5,7 @@ namespace mfdyn {
 
 class CubicLattice final : public Lattice {
 public:
+    static KeywordSchema keywords();
     CubicLattice(const Dictionary& dict, int dimension);
     double pointVolume() const override;
 

@@ -11,7 +11,11 @@
 
 namespace mfdyn {
 
-HcpLattice::HcpLattice(const Dictionary& dict, int dimension) : Lattice(dict, dimension) {
+KeywordSchema HcpLattice::keywords() {
+    return commonKeywords("hcp");
+}
+
+HcpLattice::HcpLattice(const Dictionary& dict, int dimension) : Lattice(keywords().read(dict), dimension) {
     if (dimension != 3) throw dict.error("type", "the hcp lattice is 3D; use hexagonal in 2D or cubic in 1D");
 }
 

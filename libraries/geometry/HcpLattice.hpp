@@ -5,6 +5,7 @@ namespace mfdyn {
 
 class HcpLattice final : public Lattice {
 public:
+    static KeywordSchema keywords();
     HcpLattice(const Dictionary& dict, int dimension);
     double pointVolume() const override;
 

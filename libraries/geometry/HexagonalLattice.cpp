@@ -11,7 +11,12 @@
 
 namespace mfdyn {
 
-HexagonalLattice::HexagonalLattice(const Dictionary& dict, int dimension) : Lattice(dict, dimension) {
+KeywordSchema HexagonalLattice::keywords() {
+    return commonKeywords("hexagonal");
+}
+
+HexagonalLattice::HexagonalLattice(const Dictionary& dict, int dimension)
+    : Lattice(keywords().read(dict), dimension) {
     if (dimension != 2) throw dict.error("type", "the hexagonal lattice is 2D; use hcp in 3D or cubic in 1D");
 }
 

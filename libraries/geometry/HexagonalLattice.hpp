@@ -5,6 +5,7 @@ namespace mfdyn {
 
 class HexagonalLattice final : public Lattice {
 public:
+    static KeywordSchema keywords();
     HexagonalLattice(const Dictionary& dict, int dimension);
     double pointVolume() const override;
 

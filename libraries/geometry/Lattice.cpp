@@ -4,20 +4,24 @@
 
 namespace mfdyn {
 
-Lattice::Lattice(const Dictionary& dict, int dimension)
-    : Lattice(dict, dimension, dict.get<double>("spacing")) {
-    if (!(spacing() > 0)) throw dict.error("spacing", "spacing must be positive");
+KeywordSchema Lattice::commonKeywords(const char* type, bool spacingOptional) {
+    KeywordSchema schema(familyName, type);
+    schema.scalar("spacing", "m", "distance between neighbouring lattice points").greaterThan(0);
+    if (spacingOptional) schema.optional();
+    return schema.scalar("jitter", "-", "random displacement of each coordinate, a fraction of the spacing")
+        .atLeast(0)
+        .lessThan(0.5)
+        .orDefault(0.0)
+        .integer("seed", "-", "seed of the jitter's random numbers (std::mt19937_64)")
+        .atLeast(0)
+        .orDefault(1);
 }
 
-Lattice::Lattice(const Dictionary& dict, int dimension, double spacing)
+Lattice::Lattice(const KeywordValues& v, int dimension)
     : dimension_(dimension),
-      spacing_(spacing),
-      jitter_(dict.getOrDefault<double>("jitter", 0.0)),
-      seed_(dict.getOrDefault<unsigned long>("seed", 1UL)) {
-    if (!(jitter_ >= 0 && jitter_ < 0.5))
-        throw dict.error("jitter",
-                         "jitter is a fraction of the spacing in [0, 0.5), found " + std::to_string(jitter_));
-}
+      spacing_(v.optionalScalar("spacing").value_or(0.0)),
+      jitter_(v.scalar("jitter")),
+      seed_(std::uint64_t(v.integer("seed"))) {}
 
 Lattice::~Lattice() = default;
 

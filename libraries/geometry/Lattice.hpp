@@ -11,6 +11,7 @@
 // (default 1) in lattice order, so a jittered lattice is still identical run to run. Jitter breaks
 // the lattice's symmetry (regular lattices can hold spurious symmetric modes); it is kept below ½
 // so that two points never swap places.
+#include "core/KeywordSchema.hpp"
 #include "core/Registry.hpp"
 #include "geometry/Shape.hpp"
 
@@ -28,7 +29,6 @@ public:
         return Selector::New(dict, dimension);
     }
 
-    Lattice(const Dictionary& dict, int dimension);
     virtual ~Lattice();
     int dimension() const { return dimension_; }
     double spacing() const { return spacing_; }
@@ -46,9 +46,11 @@ public:
     virtual std::vector<double> pointVolumes(const BoundingBox& box, const std::vector<double>& points) const;
 
 protected:
-    // For a lattice whose spacing is not one number given as `spacing` (nodal with `points`):
-    // `spacing` is taken as given and the keyword is not read.
-    Lattice(const Dictionary& dict, int dimension, double spacing);
+    // From the values of commonKeywords(): spacing (0 when not given: nodal with `points`),
+    // jitter, seed.
+    Lattice(const KeywordValues& v, int dimension);
+    // spacing (required unless `spacingOptional`), jitter and seed, declared for lattice `type`.
+    static KeywordSchema commonKeywords(const char* type, bool spacingOptional = false);
     std::uint64_t seed() const { return seed_; }
 
     // The regular lattice sites covering `box`, in a fixed order.

@@ -31,26 +31,24 @@
 
 namespace mfdyn {
 
-namespace {
+KeywordSchema NodalLattice::keywords() {
+    return commonKeywords("nodal", true)
+        .append(KeywordSchema(familyName, "nodal")
+                    .vector("points", "-", "nodes per direction, both faces included (instead of spacing)")
+                    .optional());
+}
 
-double nominalSpacing(const Dictionary& dict) {
-    const bool hasSpacing = dict.found("spacing"), hasPoints = dict.found("points");
-    if (hasSpacing == hasPoints)
+NodalLattice::NodalLattice(const Dictionary& dict, int dimension)
+    : NodalLattice(dict, keywords().read(dict), dimension) {}
+
+NodalLattice::NodalLattice(const Dictionary& dict, const KeywordValues& v, int dimension)
+    : Lattice(v, dimension), where_(dict.scope()) {
+    if (v.given("spacing") == v.given("points"))
         throw InputError(dict.where(), dict.scope(),
                          "the nodal lattice needs exactly one of `spacing s;` [m] and `points (n1 n2 n3);` "
                          "(nodes per direction, faces included)");
-    if (hasPoints) return 0.0;
-    const double s = dict.get<double>("spacing");
-    if (!(s > 0)) throw dict.error("spacing", "spacing must be positive");
-    return s;
-}
-
-}  // namespace
-
-NodalLattice::NodalLattice(const Dictionary& dict, int dimension)
-    : Lattice(dict, dimension, nominalSpacing(dict)), where_(dict.scope()) {
-    if (dict.found("points")) {
-        const auto n = dict.get<std::vector<double>>("points");
+    if (v.given("points")) {
+        const auto& n = v.vector("points");
         if (int(n.size()) < dimension)
             throw dict.error("points",
                              "expected " + std::to_string(dimension) + " node counts, one per direction");

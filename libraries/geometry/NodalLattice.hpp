@@ -12,6 +12,7 @@ namespace mfdyn {
 
 class NodalLattice final : public Lattice {
 public:
+    static KeywordSchema keywords();
     NodalLattice(const Dictionary& dict, int dimension);
 
     // Jittered sites: only the coordinates of a node that are not on a face of the box move, so a
@@ -32,6 +33,7 @@ protected:
     std::vector<double> sites(const BoundingBox& box) const override;
 
 private:
+    NodalLattice(const Dictionary& dict, const KeywordValues& v, int dimension);
     std::array<long, 3> points_{0, 0, 0};  // from `points`, else 0
     std::string where_;                    // the dictionary's scope, for messages
 };
