@@ -9,6 +9,8 @@
 #include "geometry/HexagonalLattice.hpp"
 #include "geometry/NodalLattice.hpp"
 
+#include "../SchemaTestTools.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -18,27 +20,16 @@ using namespace mfdyn;
 namespace {
 
 std::string errorOf(const std::string& text, int dimension) {
-    try {
-        Lattice::New(Dictionary::parse(text, "lattice"), dimension);
-    } catch (const InputError& error) {
-        return error.what();
-    }
-    ADD_FAILURE() << "accepted: " << text;
-    return "";
+    return test::inputErrorOf([&] { Lattice::New(Dictionary::parse(text, "lattice"), dimension); }, text);
 }
 
 }  // namespace
 
 TEST(LatticeKeywords, EveryTypeDeclaresSpacingJitterAndSeed) {
-    const KeywordSchema schemas[] = {CubicLattice::keywords(), HexagonalLattice::keywords(),
-                                     HcpLattice::keywords(), NodalLattice::keywords()};
-    const RegistryFamily* family = RegistryIndex::global().findFamily(Lattice::familyName);
-    ASSERT_NE(family, nullptr);
+    const auto schemas = {CubicLattice::keywords(), HexagonalLattice::keywords(), HcpLattice::keywords(),
+                          NodalLattice::keywords()};
+    test::expectRegisteredSchemas(Lattice::familyName, schemas, "libraries/geometry/");
     for (const KeywordSchema& schema : schemas) {
-        const RegistryItem* item = family->find(schema.type());
-        ASSERT_NE(item, nullptr) << schema.type();
-        ASSERT_NE(item->keywords, nullptr) << schema.type();
-        EXPECT_EQ(item->sourceFile.rfind("libraries/geometry/", 0), 0u) << item->sourceFile;
         for (const char* name : {"spacing", "jitter", "seed"}) ASSERT_NE(schema.find(name), nullptr) << name;
         EXPECT_EQ(schema.find("spacing")->kind,
                   schema.type() == "nodal" ? Keyword::Kind::optional : Keyword::Kind::required);

@@ -8,6 +8,8 @@
 #include "sph/NumberScheme.hpp"
 #include "sph/VolumeScheme.hpp"
 
+#include "../SchemaTestTools.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -21,28 +23,15 @@ std::unique_ptr<DensityScheme> scheme(const std::string& text) {
 }
 
 std::string errorOf(const std::string& text) {
-    try {
-        scheme(text);
-    } catch (const InputError& error) {
-        return error.what();
-    }
-    ADD_FAILURE() << "accepted: " << text;
-    return "";
+    return test::inputErrorOf([&] { scheme(text); }, text);
 }
 
 }  // namespace
 
 TEST(DensitySchemeContract, EveryTypeDeclaresTheCommonKeywords) {
-    const KeywordSchema schemas[] = {MassScheme::keywords(), NumberScheme::keywords(),
-                                     VolumeScheme::keywords()};
-    const RegistryFamily* family = RegistryIndex::global().findFamily(DensityScheme::familyName);
-    ASSERT_NE(family, nullptr);
+    const auto schemas = {MassScheme::keywords(), NumberScheme::keywords(), VolumeScheme::keywords()};
+    test::expectRegisteredSchemas(DensityScheme::familyName, schemas, "libraries/sph/");
     for (const KeywordSchema& schema : schemas) {
-        EXPECT_EQ(schema.family(), "densityScheme");
-        const RegistryItem* item = family->find(schema.type());
-        ASSERT_NE(item, nullptr) << schema.type();
-        ASSERT_NE(item->keywords, nullptr) << schema.type();
-        EXPECT_EQ(item->sourceFile.rfind("libraries/sph/", 0), 0u) << item->sourceFile;
         for (const char* name : {"form", "gradH", "omegaMin"}) EXPECT_NE(schema.find(name), nullptr) << name;
     }
     const auto defaults = scheme("type number;");

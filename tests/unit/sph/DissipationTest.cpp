@@ -8,6 +8,8 @@
 #include "sph/NoDissipation.hpp"
 #include "sph/RiemannDissipation.hpp"
 
+#include "../SchemaTestTools.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -22,37 +24,20 @@ DissipationParameters parametersOf(const std::string& text) {
 
 // The message of the InputError that `text` raises ("" and a test failure if none).
 std::string errorOf(const std::string& text) {
-    try {
-        parametersOf(text);
-    } catch (const InputError& error) {
-        return error.what();
-    }
-    ADD_FAILURE() << "accepted: " << text;
-    return "";
+    return test::inputErrorOf([&] { parametersOf(text); }, text);
 }
 
 }  // namespace
 
 TEST(DissipationContract, EveryTypeDeclaresAKeywordSchema) {
     // Named here so that the library, and its registrations, are linked.
-    const KeywordSchema schemas[] = {RiemannDissipation::keywords(), MonaghanGingoldViscosity::keywords(),
-                                     NoDissipation::keywords()};
-    const RegistryFamily* family = RegistryIndex::global().findFamily(Dissipation::familyName);
-    ASSERT_NE(family, nullptr);
-    for (const KeywordSchema& schema : schemas) {
-        EXPECT_EQ(schema.family(), "dissipation");
-        const RegistryItem* item = family->find(schema.type());
-        ASSERT_NE(item, nullptr) << schema.type();
-        ASSERT_NE(item->keywords, nullptr) << schema.type();
-        EXPECT_EQ(item->keywords().keywords().size(), schema.keywords().size());
-        EXPECT_EQ(item->sourceFile.rfind("libraries/sph/", 0), 0u) << item->sourceFile;
-        for (const Keyword& k : schema.keywords()) {
-            EXPECT_FALSE(k.meaning.empty()) << schema.type() << " " << k.name;
-            EXPECT_FALSE(k.unit.empty()) << schema.type() << " " << k.name;
-            // Every keyword has a default: `dissipation { type <name>; }` is a whole model.
+    const auto schemas = {RiemannDissipation::keywords(), MonaghanGingoldViscosity::keywords(),
+                          NoDissipation::keywords()};
+    test::expectRegisteredSchemas(Dissipation::familyName, schemas, "libraries/sph/");
+    // Every keyword has a default: `dissipation { type <name>; }` is a whole model.
+    for (const KeywordSchema& schema : schemas)
+        for (const Keyword& k : schema.keywords())
             EXPECT_EQ(k.kind, Keyword::Kind::defaulted) << schema.type() << " " << k.name;
-        }
-    }
 }
 
 TEST(DissipationContract, DefaultsAreTheThesisAndMonaghanValues) {

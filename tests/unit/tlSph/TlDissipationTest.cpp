@@ -8,6 +8,8 @@
 #include "tlSph/JstDissipation.hpp"
 #include "tlSph/NoTlDissipation.hpp"
 
+#include "../SchemaTestTools.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -21,30 +23,16 @@ TlDissipationCoefficients coefficientsOf(const std::string& text) {
 }
 
 std::string errorOf(const std::string& text) {
-    try {
-        coefficientsOf(text);
-    } catch (const InputError& error) {
-        return error.what();
-    }
-    ADD_FAILURE() << "accepted: " << text;
-    return "";
+    return test::inputErrorOf([&] { coefficientsOf(text); }, text);
 }
 
 }  // namespace
 
 TEST(TlDissipationContract, EveryTypeDeclaresAKeywordSchema) {
-    const KeywordSchema schemas[] = {JstDissipation::keywords(), ArtificialViscosity::keywords(),
-                                     NoTlDissipation::keywords()};
-    const RegistryFamily* family = RegistryIndex::global().findFamily(TlDissipation::familyName);
-    ASSERT_NE(family, nullptr);
-    for (const KeywordSchema& schema : schemas) {
-        EXPECT_EQ(schema.family(), "tlDissipation");
-        const RegistryItem* item = family->find(schema.type());
-        ASSERT_NE(item, nullptr) << schema.type();
-        ASSERT_NE(item->keywords, nullptr) << schema.type();
-        EXPECT_EQ(item->sourceFile.rfind("libraries/tlSph/", 0), 0u) << item->sourceFile;
-        for (const Keyword& k : schema.keywords()) EXPECT_FALSE(k.meaning.empty()) << k.name;
-    }
+    test::expectRegisteredSchemas(
+        TlDissipation::familyName,
+        {JstDissipation::keywords(), ArtificialViscosity::keywords(), NoTlDissipation::keywords()},
+        "libraries/tlSph/");
 }
 
 TEST(TlDissipationContract, DefaultsAndGivenValues) {
