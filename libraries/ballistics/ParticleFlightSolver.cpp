@@ -74,14 +74,14 @@ void ParticleFlightSolver<Dim>::step(double dt) {
 
 template <int Dim>
 void ParticleFlightSolver<Dim>::checkFinite(double t) const {
-    const double bad = Reduce::sum<double>(x_.size(), [&](std::size_t i) {
-        return (x_[i].allFinite() && v_[i].allFinite()) ? 0.0 : 1.0;
-    });
+    const double bad = Reduce::sum<double>(
+        x_.size(), [&](std::size_t i) { return (x_[i].allFinite() && v_[i].allFinite()) ? 0.0 : 1.0; });
     if (bad == 0) return;
     for (std::size_t i = 0; i < x_.size(); ++i) {
         if (x_[i].allFinite() && v_[i].allFinite()) continue;
-        throw RunError("phase integrate, step " + std::to_string(time().timeIndex() + 1) + ", t = " + std::to_string(t) +
-                       ": particle " + std::to_string(particles_->globalId()[i]) + " (region " +
+        throw RunError("phase integrate, step " + std::to_string(time().timeIndex() + 1) +
+                       ", t = " + std::to_string(t) + ": particle " +
+                       std::to_string(particles_->globalId()[i]) + " (region " +
                        std::to_string(particles_->region()[i]) + ") has a non-finite position or velocity; " +
                        std::to_string(std::int64_t(bad)) + " particles affected");
     }
@@ -90,7 +90,8 @@ void ParticleFlightSolver<Dim>::checkFinite(double t) const {
 template <int Dim>
 std::optional<double> ParticleFlightSolver<Dim>::potentialEnergy() const {
     const auto& m = particles_->template requireField<double>("mass");
-    return Reduce::sum<double>(x_.size(), [&](std::size_t i) { return m[i] * bodyForce_->potential(x_[i].data()); });
+    return Reduce::sum<double>(x_.size(),
+                               [&](std::size_t i) { return m[i] * bodyForce_->potential(x_[i].data()); });
 }
 
 template <int Dim>

@@ -16,7 +16,8 @@ namespace mfdyn {
 namespace {
 const BodyForceSolver& bodyForceSolver(const Dictionary& dict, const RunContext& context) {
     auto* solver = dynamic_cast<const BodyForceSolver*>(&context);
-    if (!solver) throw dict.error("type", "trajectoryError needs a solver with a body force (particleFlight)");
+    if (!solver)
+        throw dict.error("type", "trajectoryError needs a solver with a body force (particleFlight)");
     return *solver;
 }
 }  // namespace
@@ -33,7 +34,8 @@ TrajectoryError::TrajectoryError(const Dictionary& dict, const std::string& name
     x0_.resize(fields.size() * dim);
     v0_.resize(fields.size() * dim);
     for (std::size_t i = 0; i < fields.size(); ++i)
-        for (int d = 0; d < dim; ++d) x0_[i * dim + d] = x.component(i, d), v0_[i * dim + d] = v.component(i, d);
+        for (int d = 0; d < dim; ++d)
+            x0_[i * dim + d] = x.component(i, d), v0_[i * dim + d] = v.component(i, d);
     double probe[3], probeV[3];
     if (fields.size() && !solver_.bodyForce().exactTrajectory(x0_.data(), v0_.data(), 0.0, probe, probeV))
         throw dict.error("type", "the selected bodyForce has no exact trajectory to compare with");

@@ -18,10 +18,12 @@ UniformGravity::UniformGravity(const Dictionary& dict, int dimension) : BodyForc
     const KeywordValues values = keywords().read(dict);
     const std::vector<double>& g = values.vector("g");
     if (int(g.size()) < dimension)
-        throw dict.error("g", "expected a vector of at least " + std::to_string(dimension) + " components for a " +
-                                  std::to_string(dimension) + "D case");
+        throw dict.error("g", "expected a vector of at least " + std::to_string(dimension) +
+                                  " components for a " + std::to_string(dimension) + "D case");
     for (std::size_t k = dimension; k < g.size(); ++k)
-        if (g[k] != 0) throw dict.error("g", "component " + std::to_string(k + 1) + " is non-zero in a " + std::to_string(dimension) + "D case");
+        if (g[k] != 0)
+            throw dict.error("g", "component " + std::to_string(k + 1) + " is non-zero in a " +
+                                      std::to_string(dimension) + "D case");
     for (int d = 0; d < dimension; ++d) g_[d] = g[d];
 }
 
@@ -35,7 +37,8 @@ double UniformGravity::potential(const double* x) const {
     return phi;
 }
 
-bool UniformGravity::exactTrajectory(const double* x0, const double* v0, double tau, double* x, double* v) const {
+bool UniformGravity::exactTrajectory(const double* x0, const double* v0, double tau, double* x,
+                                     double* v) const {
     for (int d = 0; d < dimension(); ++d) {
         x[d] = x0[d] + v0[d] * tau + 0.5 * g_[d] * tau * tau;
         v[d] = v0[d] + g_[d] * tau;
@@ -43,6 +46,7 @@ bool UniformGravity::exactTrajectory(const double* x0, const double* v0, double 
     return true;
 }
 
-MFDYN_REGISTER(BodyForce, UniformGravity, "uniformGravity", "constant acceleration g (exact trajectory known)");
+MFDYN_REGISTER(BodyForce, UniformGravity, "uniformGravity",
+               "constant acceleration g (exact trajectory known)");
 
 }  // namespace mfdyn

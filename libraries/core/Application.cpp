@@ -79,7 +79,8 @@ Arguments Arguments::parse(int argc, char** argv, const ApplicationInfo& info) {
             if (option->argument.empty()) {
                 args.options_[name] = "";
             } else {
-                if (i + 1 >= argc) throw InputError("option '" + word + "' needs an argument <" + option->argument + ">");
+                if (i + 1 >= argc)
+                    throw InputError("option '" + word + "' needs an argument <" + option->argument + ">");
                 args.options_[name] = argv[++i];
             }
         } else {
@@ -98,7 +99,8 @@ std::string usage(const ApplicationInfo& info) {
     for (const auto* list : {&info.options, &commonOptions()}) {
         for (const auto& option : *list) {
             if (option.name == "case" && !info.usesCase) continue;
-            std::string head = "  -" + option.name + (option.argument.empty() ? "" : " <" + option.argument + ">");
+            std::string head =
+                "  -" + option.name + (option.argument.empty() ? "" : " <" + option.argument + ">");
             s << head << std::string(head.size() < 24 ? 24 - head.size() : 1, ' ') << option.help << "\n";
         }
     }
@@ -141,7 +143,8 @@ int runApplication(int argc, char** argv, const ApplicationInfo& info,
             return 0;
         }
         if (args.positional().size() < info.positional.size())
-            throw InputError("missing argument <" + info.positional[args.positional().size()] + ">\n" + usage(info));
+            throw InputError("missing argument <" + info.positional[args.positional().size()] + ">\n" +
+                             usage(info));
         return body(args);
     } catch (const Error& e) {
         std::cout.flush();

@@ -5,7 +5,8 @@
 //     int main(int argc, char** argv) {
 //         mfdyn::ApplicationInfo info{"mfDictionary", "Print, query and edit a dictionary.",
 //                                     {{"entry", "key", "the scoped entry to print or set"}}, {"file"}};
-//         return mfdyn::runApplication(argc, argv, info, [](const mfdyn::Arguments& args) { ...; return 0; });
+//         return mfdyn::runApplication(argc, argv, info, [](const mfdyn::Arguments& args) { ...; return 0;
+//         });
 //     }
 #include <filesystem>
 #include <functional>
@@ -25,9 +26,9 @@ struct ApplicationOption {
 struct ApplicationInfo {
     std::string name;
     std::string synopsis;
-    std::vector<ApplicationOption> options;      // beyond the common ones
-    std::vector<std::string> positional;         // names of required positional arguments
-    bool usesCase = true;                        // accepts -case and loads its controlDict libs for -listModels
+    std::vector<ApplicationOption> options;  // beyond the common ones
+    std::vector<std::string> positional;     // names of required positional arguments
+    bool usesCase = true;                    // accepts -case and loads its controlDict libs for -listModels
 };
 
 class Arguments {

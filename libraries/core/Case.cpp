@@ -22,8 +22,12 @@ Dictionary readCaseFile(const fs::path& file) {
 }
 }  // namespace
 
-Dictionary Case::readSystem(const std::string& name) const { return readCaseFile(systemFile(name)); }
-Dictionary Case::readConstant(const std::string& name) const { return readCaseFile(constantFile(name)); }
+Dictionary Case::readSystem(const std::string& name) const {
+    return readCaseFile(systemFile(name));
+}
+Dictionary Case::readConstant(const std::string& name) const {
+    return readCaseFile(constantFile(name));
+}
 
 std::vector<TimeDirectory> Case::timeDirectories() const {
     std::vector<TimeDirectory> times;

@@ -43,10 +43,10 @@ struct Token {
 // One `key value...;` or `key { ... }` entry.
 struct Entry {
     std::string key;
-    std::vector<Token> tokens;          // the value, for a primitive entry
-    std::unique_ptr<Dictionary> dict;   // the value, for a dictionary entry
-    SourceLocation where;               // of the key
-    bool fromInclude = false;           // came from #include/#includeEtc/$macro: may be overridden
+    std::vector<Token> tokens;         // the value, for a primitive entry
+    std::unique_ptr<Dictionary> dict;  // the value, for a dictionary entry
+    SourceLocation where;              // of the key
+    bool fromInclude = false;          // came from #include/#includeEtc/$macro: may be overridden
     // Byte span of the value in its file (for mfDictionary -set editing in place); for a
     // dictionary entry, the span of the braces' contents. Only valid when where.file is set.
     std::size_t valueBegin = 0, valueEnd = 0;
@@ -58,7 +58,7 @@ struct Entry {
 };
 
 struct UnusedEntry {
-    std::string scopedKey;   // "materials/target/rho0"
+    std::string scopedKey;  // "materials/target/rho0"
     SourceLocation where;
     std::string suggestion;  // closest key asked for in the same scope, or empty
 };
@@ -85,7 +85,8 @@ public:
     // Parse a file. Throws InputError naming file:line:column on any syntax or include error.
     static Dictionary read(const std::filesystem::path& file, const ReadOptions& options = {});
     // Parse text; `fileName` is used in messages and as the base for relative #include.
-    static Dictionary parse(std::string_view text, const std::string& fileName, const ReadOptions& options = {});
+    static Dictionary parse(std::string_view text, const std::string& fileName,
+                            const ReadOptions& options = {});
 
     // "materials/target/strength" (empty for a top-level dictionary).
     const std::string& scope() const { return name_; }

@@ -24,8 +24,8 @@ std::vector<fs::path> LibraryLoader::searchPath(const fs::path& caseDir) {
     return dirs;
 }
 
-std::string LibraryLoader::loadOne(const std::string& name, const fs::path& caseDir, const Dictionary& context,
-                                   const std::string& key) {
+std::string LibraryLoader::loadOne(const std::string& name, const fs::path& caseDir,
+                                   const Dictionary& context, const std::string& key) {
     static std::set<std::string> loaded;
     std::vector<std::string> candidates;
     if (fs::path(name).is_absolute()) {

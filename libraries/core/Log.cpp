@@ -19,24 +19,31 @@ namespace {
 std::atomic<int> warnings{0};
 }
 
-void Log::info(const std::string& message) { std::cout << message << std::endl; }
+void Log::info(const std::string& message) {
+    std::cout << message << std::endl;
+}
 
 void Log::warning(const std::string& message) {
     ++warnings;
     std::cout << "Warning: " << message << std::endl;
 }
 
-int Log::warningCount() { return warnings.load(); }
+int Log::warningCount() {
+    return warnings.load();
+}
 
-bool Log::interactive() { return isatty(STDOUT_FILENO) != 0; }
+bool Log::interactive() {
+    return isatty(STDOUT_FILENO) != 0;
+}
 
 std::string banner(const std::string& application, const std::filesystem::path& caseDir,
                    const std::string& commandLine) {
     std::string line(72, '-');
-    return line + "\n" + application + "  (mfdyn " MFDYN_VERSION ", git " MFDYN_GIT_REVISION ", " MFDYN_BUILD_TYPE
-           ")\n" + "  command: " + commandLine + "\n  case:    " +
-           std::filesystem::absolute(caseDir).lexically_normal().string() + "\n  threads: " +
-           std::to_string(threadCount()) + "\n" + line;
+    return line + "\n" + application +
+           "  (mfdyn " MFDYN_VERSION ", git " MFDYN_GIT_REVISION ", " MFDYN_BUILD_TYPE ")\n" +
+           "  command: " + commandLine +
+           "\n  case:    " + std::filesystem::absolute(caseDir).lexically_normal().string() +
+           "\n  threads: " + std::to_string(threadCount()) + "\n" + line;
 }
 
 std::size_t peakMemoryBytes() {

@@ -4,6 +4,8 @@
 
 namespace mfdyn {
 
-int threadCount() { return omp_get_max_threads(); }
+int threadCount() {
+    return omp_get_max_threads();
+}
 
 }  // namespace mfdyn

@@ -84,9 +84,15 @@ struct Reduce {
 
     // The hooks an MPI build fills in; on one process they return their argument.
     template <class T>
-    static T global(const T& local) { return local; }
-    static double globalMax(double local) { return local; }
-    static double globalMin(double local) { return local; }
+    static T global(const T& local) {
+        return local;
+    }
+    static double globalMax(double local) {
+        return local;
+    }
+    static double globalMin(double local) {
+        return local;
+    }
 };
 
 }  // namespace mfdyn

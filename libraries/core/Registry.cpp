@@ -31,7 +31,8 @@ std::string RegistryFamily::unknownTypeMessage(std::string_view type) const {
 std::string RegistryFamily::validTypes() const {
     std::ostringstream s;
     if (items.empty()) {
-        s << "\n    no " << name << " types are registered (is the library that provides them loaded with libs (...)?)";
+        s << "\n    no " << name
+          << " types are registered (is the library that provides them loaded with libs (...)?)";
     } else {
         s << "\n    valid " << name << " types:";
         for (std::size_t k = 0; k < items.size(); ++k)

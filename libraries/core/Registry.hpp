@@ -9,7 +9,8 @@
 //
 // and a model registers itself with one line at the end of its own .cpp:
 //
-//     MFDYN_REGISTER(EquationOfState, MieGruneisen, "mieGruneisen", "Mie-Grüneisen EOS on a linear Us-up Hugoniot");
+//     MFDYN_REGISTER(EquationOfState, MieGruneisen, "mieGruneisen", "Mie-Grüneisen EOS on a linear Us-up
+//     Hugoniot");
 //
 // The tables live in one place in libmfdyn_core (RegistryIndex), keyed by family name, so a
 // model registered by a user library loaded with dlopen lands in the same table the solver reads,
@@ -127,7 +128,9 @@ public:
         return (*static_cast<const Factory*>(item->make.get()))(std::forward<Args>(args)...);
     }
 
-    static std::vector<std::string> names() { return RegistryIndex::global().family(Base::familyName).names(); }
+    static std::vector<std::string> names() {
+        return RegistryIndex::global().family(Base::familyName).names();
+    }
 };
 
 // Registration object: one static per model, made by MFDYN_REGISTER. A model that declares

@@ -18,13 +18,18 @@ void SignalHandler::install() {
     std::signal(SIGTERM, onStopSignal);
 }
 
-int SignalHandler::stopRequested() { return received; }
+int SignalHandler::stopRequested() {
+    return received;
+}
 
 const char* SignalHandler::name(int signal) {
     switch (signal) {
-        case SIGINT: return "SIGINT";
-        case SIGTERM: return "SIGTERM";
-        default: return "signal";
+        case SIGINT:
+            return "SIGINT";
+        case SIGTERM:
+            return "SIGTERM";
+        default:
+            return "signal";
     }
 }
 

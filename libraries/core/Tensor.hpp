@@ -51,11 +51,12 @@ struct ValueTraits<Eigen::Matrix<double, Rows, Cols>> {
         auto values = ValueTraits<std::vector<double>>::convert(entry, scope);
         constexpr int n = Rows * Cols;
         if (int(values.size()) < n)
-            throw scope.error(entry.key, "expected " + describe() + ", found " + std::to_string(values.size()) +
-                                             " values");
+            throw scope.error(
+                entry.key, "expected " + describe() + ", found " + std::to_string(values.size()) + " values");
         for (std::size_t k = n; k < values.size(); ++k)
             if (values[k] != 0.0)
-                throw scope.error(entry.key, "expected " + describe() + ": component " + std::to_string(k + 1) +
+                throw scope.error(entry.key, "expected " + describe() + ": component " +
+                                                 std::to_string(k + 1) +
                                                  " is non-zero but the case has fewer dimensions");
         Eigen::Matrix<double, Rows, Cols> m;
         for (int k = 0; k < n; ++k) m(k / Cols, k % Cols) = values[k];  // row-major in the file

@@ -61,7 +61,8 @@ double positive(const Dictionary& dict, const std::string& key, double value) {
 
 }  // namespace
 
-Time::Time(const fs::path& controlDictPath, const Dictionary& controlDict) : controlDictPath_(controlDictPath) {
+Time::Time(const fs::path& controlDictPath, const Dictionary& controlDict)
+    : controlDictPath_(controlDictPath) {
     readControls(controlDict);
     std::error_code ec;
     controlDictStamp_ = fs::last_write_time(controlDictPath_, ec);
@@ -70,16 +71,16 @@ Time::Time(const fs::path& controlDictPath, const Dictionary& controlDict) : con
 void Time::readControls(const Dictionary& dict) {
     startFrom_ = dict.getOrDefault<std::string>("startFrom", "startTime");
     if (startFrom_ != "startTime" && startFrom_ != "latestTime") {
-        std::string message = "'" + startFrom_ + "' is not a valid startFrom; valid choices: startTime | latestTime";
+        std::string message =
+            "'" + startFrom_ + "' is not a valid startFrom; valid choices: startTime | latestTime";
         if (auto g = closestMatch(startFrom_, {"startTime", "latestTime"}); !g.empty())
             message += " (did you mean '" + g + "'?)";
         throw dict.error("startFrom", message);
     }
     startTime_ = dict.getOrDefault<double>("startTime", 0.0);
-    stopAt_ = readChoice<StopAt>(dict, "stopAt", StopAt::endTime,
-                                 {{"endTime", StopAt::endTime},
-                                  {"writeNow", StopAt::writeNow},
-                                  {"noWriteNow", StopAt::noWriteNow}});
+    stopAt_ = readChoice<StopAt>(
+        dict, "stopAt", StopAt::endTime,
+        {{"endTime", StopAt::endTime}, {"writeNow", StopAt::writeNow}, {"noWriteNow", StopAt::noWriteNow}});
     endTime_ = dict.get<double>("endTime");
     fixedDeltaT_ = positive(dict, "deltaT", dict.get<double>("deltaT"));
     adjustTimeStep_ = dict.getOrDefault<bool>("adjustTimeStep", false);
@@ -91,9 +92,11 @@ void Time::readControls(const Dictionary& dict) {
                                               {"adjustableRunTime", WriteControl::adjustableRunTime}});
     writeInterval_ = positive(dict, "writeInterval", dict.get<double>("writeInterval"));
     if (writeControl_ == WriteControl::timeStep && writeInterval_ != std::floor(writeInterval_))
-        throw dict.error("writeInterval", "with writeControl timeStep, writeInterval is a whole number of steps");
+        throw dict.error("writeInterval",
+                         "with writeControl timeStep, writeInterval is a whole number of steps");
     purgeWrite_ = dict.getOrDefault<int>("purgeWrite", 0);
-    if (purgeWrite_ < 0) throw dict.error("purgeWrite", "purgeWrite must be 0 (keep all) or a positive count");
+    if (purgeWrite_ < 0)
+        throw dict.error("purgeWrite", "purgeWrite must be 0 (keep all) or a positive count");
     writePrecision_ = dict.getOrDefault<int>("writePrecision", 6);
     if (writePrecision_ < 1 || writePrecision_ > 17)
         throw dict.error("writePrecision", "writePrecision must be between 1 and 17 significant digits");
@@ -103,7 +106,8 @@ void Time::readControls(const Dictionary& dict) {
 
 std::string Time::checkModified() {
     if (!runTimeModifiable_) return {};
-    const double now = std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    const double now =
+        std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
     if (now - lastCheck_ < 0.5) return {};
     lastCheck_ = now;
     std::error_code ec;
@@ -117,12 +121,15 @@ std::string Time::checkModified() {
     try {
         readControls(Dictionary::read(controlDictPath_));
     } catch (const Error& e) {
-        Log::warning(std::string("controlDict changed but could not be re-read; keeping the old controls:\n") + e.what());
+        Log::warning(
+            std::string("controlDict changed but could not be re-read; keeping the old controls:\n") +
+            e.what());
         return {};
     }
     std::ostringstream changes;
     if (endTime_ != oldEnd) changes << " endTime " << oldEnd << " -> " << endTime_ << ";";
-    if (writeInterval_ != oldInterval) changes << " writeInterval " << oldInterval << " -> " << writeInterval_ << ";";
+    if (writeInterval_ != oldInterval)
+        changes << " writeInterval " << oldInterval << " -> " << writeInterval_ << ";";
     if (stopAt_ != oldStop) changes << " stopAt changed;";
     // The write counter follows a new interval from the present time.
     if (writeInterval_ != oldInterval && writeControl_ != WriteControl::timeStep)
@@ -173,7 +180,9 @@ bool Time::running() const {
     return value_ < endTime_ - landing * std::max(std::abs(endTime_), deltaT_);
 }
 
-double Time::nextWriteTime() const { return double(writeIndex_ + 1) * writeInterval_; }
+double Time::nextWriteTime() const {
+    return double(writeIndex_ + 1) * writeInterval_;
+}
 
 double Time::chooseDeltaT(const TimeStepVote& stable) {
     // An infinite vote means "no limit" (particles at rest); zero, negative or NaN means the state is broken.
@@ -240,7 +249,8 @@ void Time::advance(double dt) {
     }
     // The final state is always written: a run's end is what users look at first.
     if (atEnd) writeTime_ = true;
-    // Snap the name (not the value) to the write time it landed on, so directories read 0.1, not 0.0999999999.
+    // Snap the name (not the value) to the write time it landed on, so directories read 0.1, not
+    // 0.0999999999.
     timeName_ = nameOf(value_);
 }
 

@@ -102,7 +102,7 @@ private:
 
     double value_ = 0;
     double deltaT_ = 0;
-    double desiredDeltaT_ = 0;   // the step before clipping to write/end times (limits growth)
+    double desiredDeltaT_ = 0;  // the step before clipping to write/end times (limits growth)
     std::int64_t timeIndex_ = 0;
     std::int64_t writeIndex_ = 0;  // write intervals completed (runTime, adjustableRunTime)
     std::string timeName_ = "0";

@@ -18,7 +18,8 @@
 
 namespace mfdyn {
 
-ConservedQuantities::ConservedQuantities(const Dictionary& dict, const std::string& name, const RunContext& context)
+ConservedQuantities::ConservedQuantities(const Dictionary& dict, const std::string& name,
+                                         const RunContext& context)
     : FunctionObject(dict, name, context) {
     const int dim = context.dimension();
     const char* axes[] = {"x", "y", "z"};
@@ -61,7 +62,8 @@ std::vector<double> ConservedQuantities::measure() const {
         for (int d = 0; d < dim; ++d) x[d] = position.component(i, d), v[d] = vel(i, d);
         s.v[0] = m;
         for (int d = 0; d < dim; ++d) s.v[1 + d] = m * v[d];
-        const double lx = x[1] * v[2] - x[2] * v[1], ly = x[2] * v[0] - x[0] * v[2], lz = x[0] * v[1] - x[1] * v[0];
+        const double lx = x[1] * v[2] - x[2] * v[1], ly = x[2] * v[0] - x[0] * v[2],
+                     lz = x[0] * v[1] - x[1] * v[0];
         if (nL == 1) s.v[1 + dim] = m * lz;
         if (nL == 3) s.v[1 + dim] = m * lx, s.v[2 + dim] = m * ly, s.v[3 + dim] = m * lz;
         s.v[1 + dim + nL] = 0.5 * m * (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);

@@ -45,7 +45,8 @@ DebrisCloud::DebrisCloud(const Dictionary& dict, const std::string& name, const 
       trim_(dict.getOrDefault<double>("trim", 0.005)) {
     const int dim = context.dimension();
     if (dim < 2) throw dict.error("type", "debrisCloud measures 2D and 3D runs");
-    if (int(direction_.size()) < dim) throw dict.error("direction", "expected " + std::to_string(dim) + " components");
+    if (int(direction_.size()) < dim)
+        throw dict.error("direction", "expected " + std::to_string(dim) + " components");
     direction_.resize(dim);
     double norm = 0;
     for (double c : direction_) norm += c * c;
@@ -65,8 +66,8 @@ DebrisCloud::DebrisCloud(const Dictionary& dict, const std::string& name, const 
         targetRegions_.push_back(it - regionNames.begin());
     }
     csv_ = std::make_unique<CsvFile>(outputFile("debrisCloud.csv"),
-                                     std::vector<std::string>{"time", "length", "width", "lengthOverWidth", "holeDiameter",
-                                                              "debrisParticles"});
+                                     std::vector<std::string>{"time", "length", "width", "lengthOverWidth",
+                                                              "holeDiameter", "debrisParticles"});
 }
 
 void DebrisCloud::write() {
@@ -89,7 +90,8 @@ void DebrisCloud::write() {
         const double across = dim == 2 ? across2D : std::sqrt(r2);
         const bool target = std::find(targetRegions_.begin(), targetRegions_.end(),
                                       std::int64_t(region.component(i, 0))) != targetRegions_.end();
-        if (target && along >= front_ && along <= rear_) (across >= 0 ? holeRight : holeLeft).push_back(std::abs(across));
+        if (target && along >= front_ && along <= rear_)
+            (across >= 0 ? holeRight : holeLeft).push_back(std::abs(across));
         s.push_back(along), lateral.push_back(across);
     }
     std::vector<double> debrisS, debrisLateral;
@@ -108,8 +110,9 @@ void DebrisCloud::write() {
     }
     double hole;
     if (dim == 2) {
-        hole = (holeRight.empty() || holeLeft.empty()) ? NAN
-                                                       : quantile(holeRight, trim_) + quantile(holeLeft, trim_);
+        hole = (holeRight.empty() || holeLeft.empty())
+                   ? NAN
+                   : quantile(holeRight, trim_) + quantile(holeLeft, trim_);
     } else {
         std::vector<double> all(holeLeft);
         all.insert(all.end(), holeRight.begin(), holeRight.end());
@@ -130,7 +133,8 @@ void DebrisCloud::write() {
     }
     csv_->row({context().time().value(), length, width, ratio, hole, double(debrisS.size())});
     char line[200];
-    std::snprintf(line, sizeof line, "debris length %.4g m, width %.4g m, L/W %.3f, hole diameter %.4g m (%zu particles)",
+    std::snprintf(line, sizeof line,
+                  "debris length %.4g m, width %.4g m, L/W %.3f, hole diameter %.4g m (%zu particles)",
                   length, width, ratio, hole, debrisS.size());
     summary_ = {line};
 }

@@ -66,6 +66,7 @@ void FieldMinMax::write() {
     csv_->row(row);
 }
 
-MFDYN_REGISTER(FunctionObject, FieldMinMax, "fieldMinMax", "minimum and maximum of fields (magnitude or per component)");
+MFDYN_REGISTER(FunctionObject, FieldMinMax, "fieldMinMax",
+               "minimum and maximum of fields (magnitude or per component)");
 
 }  // namespace mfdyn

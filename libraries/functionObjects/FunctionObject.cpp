@@ -11,7 +11,8 @@ FunctionObject::FunctionObject(const Dictionary& dict, const std::string& name, 
         control_ = Control::timeStep;
         interval_ = dict.getOrDefault<double>("writeInterval", 1.0);
         if (interval_ < 1 || interval_ != std::floor(interval_))
-            throw dict.error("writeInterval", "with writeControl timeStep, writeInterval is a whole number of steps >= 1");
+            throw dict.error("writeInterval",
+                             "with writeControl timeStep, writeInterval is a whole number of steps >= 1");
     } else if (control == "runTime" || control == "adjustableRunTime") {
         control_ = Control::runTime;
         interval_ = dict.get<double>("writeInterval");
@@ -20,7 +21,8 @@ FunctionObject::FunctionObject(const Dictionary& dict, const std::string& name, 
         control_ = Control::writeTime;
         interval_ = 1;
     } else {
-        std::string message = "'" + control + "' is not a valid writeControl; valid choices: timeStep | runTime | "
+        std::string message = "'" + control +
+                              "' is not a valid writeControl; valid choices: timeStep | runTime | "
                               "adjustableRunTime | writeTime";
         throw dict.error("writeControl", message);
     }
@@ -33,8 +35,12 @@ bool FunctionObject::due(bool solverWrites) {
     const Time& time = context_.time();
     std::int64_t index = 0;
     switch (control_) {
-        case Control::timeStep: index = time.timeIndex() / std::int64_t(interval_); break;
-        case Control::runTime: index = std::int64_t(std::floor(time.value() / interval_ * (1 + 1e-9) + 1e-9)); break;
+        case Control::timeStep:
+            index = time.timeIndex() / std::int64_t(interval_);
+            break;
+        case Control::runTime:
+            index = std::int64_t(std::floor(time.value() / interval_ * (1 + 1e-9) + 1e-9));
+            break;
         case Control::writeTime:
             if (!solverWrites && lastIndex_ >= 0) return false;
             index = time.timeIndex();
@@ -77,7 +83,9 @@ FunctionObjectList::FunctionObjectList(const Dictionary& controlDict, const RunC
     const Dictionary* functions = controlDict.findDict("functions");
     if (!functions) return;
     for (const auto& entry : functions->entries()) {
-        if (!entry->isDict()) throw functions->error(entry->key, "expected a dictionary { type ...; } for function object '" + entry->key + "'");
+        if (!entry->isDict())
+            throw functions->error(
+                entry->key, "expected a dictionary { type ...; } for function object '" + entry->key + "'");
         objects_.push_back(FunctionObject::New(functions->subDict(entry->key), entry->key, context));
     }
 }

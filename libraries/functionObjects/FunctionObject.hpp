@@ -3,7 +3,8 @@
 // function object has its own writeControl:
 //
 //     writeControl  timeStep;   // timeStep (every writeInterval steps, default 1) | runTime |
-//                               // adjustableRunTime (each writeInterval of time) | writeTime (with the solver's writes)
+//                               // adjustableRunTime (each writeInterval of time) | writeTime (with the
+//                               solver's writes)
 //     writeInterval 10;
 //
 // and writes CSV under postProcessing/<name>/<startTime>/. Those that compare with a reference
@@ -49,7 +50,8 @@ protected:
     const RunContext& context() const { return context_; }
     std::filesystem::path outputFile(const std::string& fileName) const;
     // The run's field `name`, or an InputError at `key` listing the fields there are.
-    const FieldBase& requireField(const Dictionary& dict, const std::string& key, const std::string& name) const;
+    const FieldBase& requireField(const Dictionary& dict, const std::string& key,
+                                  const std::string& name) const;
 
 private:
     std::string name_;

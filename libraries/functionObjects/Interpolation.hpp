@@ -57,7 +57,8 @@ public:
     // smoothing lengths and volumes are taken now and at each update(). `defaultPositionField`
     // and `defaultMethod` are what positionField and interpolation default to.
     Interpolation(const Dictionary& dict, const FieldStore& particles,
-                  const std::string& defaultPositionField = "position", Method defaultMethod = Method::shepard);
+                  const std::string& defaultPositionField = "position",
+                  Method defaultMethod = Method::shepard);
     ~Interpolation();
     // After the particles moved (or changed in number): read them again and re-bin, keeping
     // the kernel, whose tables are costly to build.

@@ -63,14 +63,16 @@ IsothermalShockBarError::IsothermalShockBarError(const Dictionary& dict, const s
     if (!(frontWindow_ > 0)) throw dict.error("frontWindow", "expected a positive length");
     for (const auto& f : fields_) {
         if (f != "density" && f != "velocity" && f != "pressure")
-            throw dict.error("fields", "'" + f + "' has no exact counterpart; valid: density velocity pressure");
+            throw dict.error("fields",
+                             "'" + f + "' has no exact counterpart; valid: density velocity pressure");
         if (!context.fields().findField(f)) throw dict.error("fields", "this run has no field '" + f + "'");
     }
     if (!context.fields().findField("smoothingLength"))
         throw dict.error("type", "isothermalShockBarError needs the field smoothingLength (an SPH run)");
     plateaus_ = std::make_unique<CsvFile>(
-        outputFile("plateaus.csv"), std::vector<std::string>{"time", "plateau", "density", "densityExact", "velocity",
-                                                             "velocityExact", "pressure", "pressureExact", "particles"});
+        outputFile("plateaus.csv"),
+        std::vector<std::string>{"time", "plateau", "density", "densityExact", "velocity", "velocityExact",
+                                 "pressure", "pressureExact", "particles"});
     fronts_ = std::make_unique<CsvFile>(outputFile("fronts.csv"),
                                         std::vector<std::string>{"time", "front", "x", "xExact", "h"});
     contact_ = std::make_unique<CsvFile>(outputFile("contact.csv"),
@@ -85,8 +87,9 @@ void IsothermalShockBarError::write() {
     if (n == 0 || t <= 0) return;
     if (t > exact_->validUntil()) {
         char line[200];
-        std::snprintf(line, sizeof line, "isothermal shock-bar: t = %.6g is past %.6g, where the exact solution ends",
-                      t, exact_->validUntil());
+        std::snprintf(line, sizeof line,
+                      "isothermal shock-bar: t = %.6g is past %.6g, where the exact solution ends", t,
+                      exact_->validUntil());
         summary_ = {line};
         return;
     }
@@ -100,8 +103,9 @@ void IsothermalShockBarError::write() {
     const FieldBase& hField = fields.field("smoothingLength");
     std::vector<std::size_t> order(n);
     for (std::size_t i = 0; i < n; ++i) order[i] = i;
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t a, std::size_t b) { return position.component(a, 0) < position.component(b, 0); });
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return position.component(a, 0) < position.component(b, 0);
+    });
     std::vector<double> x(n), w(n), rho(n), v(n), p(n), h(n);
     for (std::size_t k = 0; k < n; ++k) {
         const std::size_t i = order[k];
@@ -147,10 +151,10 @@ void IsothermalShockBarError::write() {
         const double shock = b + transmission.rightWave().headSpeed * T;
         plateaus.push_back({"impact", impactShock, fanHead, impact.starDensityLeft(), impact.starVelocity(),
                             impact.starPressure()});
-        plateaus.push_back({"reflected", fanTail, contact, transmission.starDensityLeft(), transmission.starVelocity(),
-                            transmission.starPressure()});
-        plateaus.push_back({"transmitted", contact, shock, transmission.starDensityRight(), transmission.starVelocity(),
-                            transmission.starPressure()});
+        plateaus.push_back({"reflected", fanTail, contact, transmission.starDensityLeft(),
+                            transmission.starVelocity(), transmission.starPressure()});
+        plateaus.push_back({"transmitted", contact, shock, transmission.starDensityRight(),
+                            transmission.starVelocity(), transmission.starPressure()});
         fronts.push_back({"transmittedShock", shock});
     }
 
@@ -161,30 +165,34 @@ void IsothermalShockBarError::write() {
         const double margin = 0.2 * (q.to - q.from);
         std::vector<double> rs, vs, ps;
         for (std::size_t k = 0; k < n; ++k)
-            if (x[k] > q.from + margin && x[k] < q.to - margin) rs.push_back(rho[k]), vs.push_back(v[k]), ps.push_back(p[k]);
+            if (x[k] > q.from + margin && x[k] < q.to - margin)
+                rs.push_back(rho[k]), vs.push_back(v[k]), ps.push_back(p[k]);
         const double count = double(rs.size());
         const double r = median(rs), u = median(vs), pr = median(ps);
         plateaus_->row(time, q.name, {r, q.rho, u, q.v, pr, q.p, count});
         worstPlateau = std::max({worstPlateau, std::abs(r - q.rho) / q.rho, std::abs(u - q.v) / std::abs(q.v),
                                  std::abs(pr - q.p) / q.p});
     }
-    std::snprintf(line, sizeof line, "isothermal shock-bar: %zu plateaus, largest relative error of rho, v, P %.3g%%",
+    std::snprintf(line, sizeof line,
+                  "isothermal shock-bar: %zu plateaus, largest relative error of rho, v, P %.3g%%",
                   plateaus.size(), 100 * worstPlateau);
     summary_.push_back(line);
 
     for (const Front& f : fronts) {
         const double eps = 1e-9;
-        const double level = 0.5 * (exact_->state(f.x - eps, t).pressure + exact_->state(f.x + eps, t).pressure);
+        const double level =
+            0.5 * (exact_->state(f.x - eps, t).pressure + exact_->state(f.x + eps, t).pressure);
         double best = NAN, bestH = NAN;
         for (std::size_t k = 0; k + 1 < n; ++k) {
             if (x[k + 1] < f.x - frontWindow_ || x[k] > f.x + frontWindow_) continue;
             if ((p[k] - level) * (p[k + 1] - level) > 0 || p[k] == p[k + 1]) continue;
             const double xc = x[k] + (level - p[k]) / (p[k + 1] - p[k]) * (x[k + 1] - x[k]);
-            if (std::isnan(best) || std::abs(xc - f.x) < std::abs(best - f.x)) best = xc, bestH = 0.5 * (h[k] + h[k + 1]);
+            if (std::isnan(best) || std::abs(xc - f.x) < std::abs(best - f.x))
+                best = xc, bestH = 0.5 * (h[k] + h[k + 1]);
         }
         fronts_->row(time, f.name, {best, f.x, bestH});
-        std::snprintf(line, sizeof line, "isothermal shock-bar: %s at %.6g (exact %.6g, %+.2f h)", f.name, best, f.x,
-                      (best - f.x) / bestH);
+        std::snprintf(line, sizeof line, "isothermal shock-bar: %s at %.6g (exact %.6g, %+.2f h)", f.name,
+                      best, f.x, (best - f.x) / bestH);
         summary_.push_back(line);
     }
 
@@ -192,15 +200,18 @@ void IsothermalShockBarError::write() {
         const double pStar = transmission.starPressure();
         double worst = 0, count = 0;
         for (std::size_t k = 0; k < n; ++k)
-            if (std::abs(x[k] - contact) < 3 * h[k]) worst = std::max(worst, std::abs(p[k] - pStar) / pStar), ++count;
+            if (std::abs(x[k] - contact) < 3 * h[k])
+                worst = std::max(worst, std::abs(p[k] - pStar) / pStar), ++count;
         contact_->row({time, worst, count});
-        std::snprintf(line, sizeof line, "isothermal shock-bar: pressure within 3h of the interface off P* by %.3g%% at most",
+        std::snprintf(line, sizeof line,
+                      "isothermal shock-bar: pressure within 3h of the interface off P* by %.3g%% at most",
                       100 * worst);
         summary_.push_back(line);
     }
 
-    CsvFile profile(outputFile("profile_" + context().time().timeName() + ".csv"),
-                    {"x", "density", "densityExact", "velocity", "velocityExact", "pressure", "pressureExact"});
+    CsvFile profile(
+        outputFile("profile_" + context().time().timeName() + ".csv"),
+        {"x", "density", "densityExact", "velocity", "velocityExact", "pressure", "pressureExact"});
     for (std::size_t k = 0; k < n; ++k) {
         if (x[k] < from_ || x[k] > to_) continue;
         const FlowState s = exact_->state(x[k], t);
@@ -208,7 +219,8 @@ void IsothermalShockBarError::write() {
     }
 }
 
-MFDYN_REGISTER(FunctionObject, IsothermalShockBarError, "isothermalShockBarError",
-               "1D isothermal shock-bar (Zisis 2017 5.1) against its exact solution: norms, plateaus, shock fronts");
+MFDYN_REGISTER(
+    FunctionObject, IsothermalShockBarError, "isothermalShockBarError",
+    "1D isothermal shock-bar (Zisis 2017 5.1) against its exact solution: norms, plateaus, shock fronts");
 
 }  // namespace mfdyn

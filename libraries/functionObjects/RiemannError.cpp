@@ -36,8 +36,10 @@ RiemannEquationOfState readEos(const Dictionary& dict) {
         return RiemannEquationOfState::stiffenedGas(dict.get<double>("gamma"), dict.get<double>("pRef"));
     if (type == "linearBarotropic")
         return RiemannEquationOfState::linearBarotropic(dict.get<double>("rho0"), dict.get<double>("c0"));
-    throw dict.error("type", "riemannError has an exact solver for idealGas, stiffenedGas and linearBarotropic, "
-                             "not '" + type + "'");
+    throw dict.error("type",
+                     "riemannError has an exact solver for idealGas, stiffenedGas and linearBarotropic, "
+                     "not '" +
+                         type + "'");
 }
 
 PrimitiveState readState(const Dictionary& dict) {
@@ -57,8 +59,9 @@ RiemannError::RiemannError(const Dictionary& dict, const std::string& name, cons
       t0_(context.time().value()),
       fields_(dict.getOrDefault<std::vector<std::string>>("fields", {"density", "velocity", "pressure"})),
       norms_(outputFile("errorNorms.csv"), name) {
-    if (context.dimension() != 1) throw dict.error("type", "riemannError compares 1D runs; this case is " +
-                                                               std::to_string(context.dimension()) + "D");
+    if (context.dimension() != 1)
+        throw dict.error("type", "riemannError compares 1D runs; this case is " +
+                                     std::to_string(context.dimension()) + "D");
     const Dictionary& left = dict.subDict("left");
     const Dictionary& right = dict.subDict("right");
     exact_ = std::make_unique<ShockTubeSolution>(dict.get<double>("x0"), readState(left),
@@ -70,12 +73,14 @@ RiemannError::RiemannError(const Dictionary& dict, const std::string& name, cons
     from_ = interval[0], to_ = interval[1];
     for (const auto& f : fields_) {
         if (f != "density" && f != "velocity" && f != "pressure" && f != "specificInternalEnergy")
-            throw dict.error("fields", "'" + f + "' has no exact counterpart; valid: density velocity pressure "
-                                                 "specificInternalEnergy");
+            throw dict.error("fields", "'" + f +
+                                           "' has no exact counterpart; valid: density velocity pressure "
+                                           "specificInternalEnergy");
         requireField(dict, "fields", f);
     }
-    star_ = std::make_unique<CsvFile>(outputFile("starState.csv"),
-                                      std::vector<std::string>{"time", "pStar", "pStarExact", "uStar", "uStarExact"});
+    star_ = std::make_unique<CsvFile>(
+        outputFile("starState.csv"),
+        std::vector<std::string>{"time", "pStar", "pStarExact", "uStar", "uStarExact"});
 }
 
 void RiemannError::write() {
@@ -87,7 +92,8 @@ void RiemannError::write() {
     const FieldBase& position = fields.field("position");
     const FieldBase& mass = fields.field("mass");
     const FieldBase& rho = fields.field("density");
-    for (std::size_t i = 0; i < n; ++i) x[i] = position.component(i, 0), w[i] = mass.component(i, 0) / rho.component(i, 0);
+    for (std::size_t i = 0; i < n; ++i)
+        x[i] = position.component(i, 0), w[i] = mass.component(i, 0) / rho.component(i, 0);
 
     for (const auto& name : fields_) {
         const FieldBase& f = fields.field(name);
@@ -113,7 +119,8 @@ void RiemannError::write() {
     std::vector<double> ps, vs;
     for (std::size_t i = 0; i < n; ++i) {
         const double xi = x[i];
-        if (xi < waves.leftTail + margin || xi > waves.rightTail - margin || std::abs(xi - waves.contact) < margin)
+        if (xi < waves.leftTail + margin || xi > waves.rightTail - margin ||
+            std::abs(xi - waves.contact) < margin)
             continue;
         ps.push_back(p.component(i, 0)), vs.push_back(v.component(i, 0));
     }
@@ -125,16 +132,19 @@ void RiemannError::write() {
     std::vector<std::size_t> order(n);
     for (std::size_t i = 0; i < n; ++i) order[i] = i;
     std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return x[a] < x[b]; });
-    CsvFile profile(outputFile("profile_" + context().time().timeName() + ".csv"),
-                    {"x", "density", "densityExact", "velocity", "velocityExact", "pressure", "pressureExact"});
+    CsvFile profile(
+        outputFile("profile_" + context().time().timeName() + ".csv"),
+        {"x", "density", "densityExact", "velocity", "velocityExact", "pressure", "pressureExact"});
     for (const std::size_t i : order) {
         if (x[i] < from_ || x[i] > to_) continue;
         const FlowState s = exact_->state(x[i], t);
-        profile.row({x[i], rho.component(i, 0), s.density, v.component(i, 0), s.velocity, p.component(i, 0), s.pressure});
+        profile.row({x[i], rho.component(i, 0), s.density, v.component(i, 0), s.velocity, p.component(i, 0),
+                     s.pressure});
     }
     char line[200];
-    std::snprintf(line, sizeof line, "star pressure %.6g (exact %.6g, %+.2f%%), star velocity %.6g (exact %.6g, %+.2f%%)",
-                  pStar, pExact, 100 * (pStar - pExact) / pExact, uStar, uExact, 100 * (uStar - uExact) / uExact);
+    std::snprintf(line, sizeof line,
+                  "star pressure %.6g (exact %.6g, %+.2f%%), star velocity %.6g (exact %.6g, %+.2f%%)", pStar,
+                  pExact, 100 * (pStar - pExact) / pExact, uStar, uExact, 100 * (uStar - uExact) / uExact);
     summary_ = {line};
 }
 

@@ -17,7 +17,8 @@ public:
     virtual const Time& time() const = 0;
     virtual const FieldStore& fields() const = 0;
     int dimension() const { return fields().dimension(); }
-    // The time directory the run started from: function objects write under postProcessing/<name>/<startTimeName>/.
+    // The time directory the run started from: function objects write under
+    // postProcessing/<name>/<startTimeName>/.
     virtual const std::string& startTimeName() const = 0;
     // Σ m e, or the stored elastic energy, when the solver has one.
     virtual std::optional<double> internalEnergy() const { return std::nullopt; }

@@ -89,7 +89,7 @@ std::unique_ptr<ParticleSetBase> ParticleGenerator::generate() {
     if (regions.size() == 0) throw regions.error("", "no regions defined");
 
     std::vector<std::string> fieldNames;  // union over regions, in order of first appearance
-    std::vector<int> fieldComponents;  // 0 for a scalar field, dim for a vector field
+    std::vector<int> fieldComponents;     // 0 for a scalar field, dim for a vector field
     struct Particle {
         std::vector<double> x;
         std::int64_t region;

@@ -12,7 +12,8 @@ std::array<double, 3> Shape::readPoint(const Dictionary& dict, const std::string
                                   std::to_string(values.size()));
     std::array<double, 3> p{0, 0, 0};
     for (std::size_t k = 0; k < values.size(); ++k) {
-        if (int(k) < dimension_) p[k] = values[k];
+        if (int(k) < dimension_)
+            p[k] = values[k];
         else if (values[k] != 0)
             throw dict.error(key, "component " + std::to_string(k + 1) + " is non-zero in a " +
                                       std::to_string(dimension_) + "D case");

@@ -20,7 +20,9 @@ class Shape {
 public:
     static constexpr const char* familyName = "shape";
     using Selector = Registry<Shape, const Dictionary&, int>;
-    static std::unique_ptr<Shape> New(const Dictionary& dict, int dimension) { return Selector::New(dict, dimension); }
+    static std::unique_ptr<Shape> New(const Dictionary& dict, int dimension) {
+        return Selector::New(dict, dimension);
+    }
 
     Shape(const Dictionary& dict, int dimension);
     virtual ~Shape();

@@ -100,7 +100,8 @@ std::unique_ptr<ParticleSet<Dim>> adoptParticleSet(std::unique_ptr<ParticleSetBa
 // A scalar field the particle file must carry: an InputError naming it, what it is for and the
 // fields there are, when it is missing.
 template <int Dim>
-std::vector<double>& requireScalarField(ParticleSet<Dim>& particles, const std::string& name, const std::string& why) {
+std::vector<double>& requireScalarField(ParticleSet<Dim>& particles, const std::string& name,
+                                        const std::string& why) {
     if (!particles.hasField(name)) {
         std::string have;
         for (const auto& n : particles.fieldNames()) have += " " + n;

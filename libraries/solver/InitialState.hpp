@@ -58,7 +58,7 @@ protected:
     explicit InitialState(const Dictionary& dict);
 
 private:
-    Dictionary dict_;  // for the location of errors found in apply()
+    Dictionary dict_;                     // for the location of errors found in apply()
     std::shared_ptr<const Shape> shape_;  // `shape`: only reference positions inside it
     std::vector<std::string> regions_;
 };

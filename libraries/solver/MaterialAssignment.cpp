@@ -41,11 +41,14 @@ void assignMaterials(ParticleSet<Dim>& particles, const std::vector<std::string>
         std::int64_t k = (id >= 0 && std::size_t(id) < map.size()) ? map[id] : -1;
         if (k < 0 && names.size() == 1) k = 0;
         if (k < 0) {
-            const std::string name = (id >= 0 && std::size_t(id) < source.size()) ? source[id] : std::to_string(id);
-            throw materialProperties.error("materials", "particle " + std::to_string(particles.globalId()[i]) +
-                                                            " has material/region '" + name +
-                                                            "', which constant/materialProperties does not define; "
-                                                            "materials:" + valid());
+            const std::string name =
+                (id >= 0 && std::size_t(id) < source.size()) ? source[id] : std::to_string(id);
+            throw materialProperties.error("materials",
+                                           "particle " + std::to_string(particles.globalId()[i]) +
+                                               " has material/region '" + name +
+                                               "', which constant/materialProperties does not define; "
+                                               "materials:" +
+                                               valid());
         }
         material[i] = k;
     }

@@ -7,8 +7,14 @@ namespace mfdyn {
 Solver::Solver(SolverRun& run) : run_(run) {}
 Solver::~Solver() = default;
 
-const Case& Solver::runCase() const { return run_.runCase(); }
-const Time& Solver::time() const { return run_.time(); }
-const std::string& Solver::startTimeName() const { return run_.startTimeName(); }
+const Case& Solver::runCase() const {
+    return run_.runCase();
+}
+const Time& Solver::time() const {
+    return run_.time();
+}
+const std::string& Solver::startTimeName() const {
+    return run_.startTimeName();
+}
 
 }  // namespace mfdyn

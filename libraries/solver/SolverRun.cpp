@@ -24,7 +24,9 @@ namespace {
 
 Dictionary readControlDict(const Case& c) {
     const fs::path file = c.systemFile("controlDict");
-    if (!fs::exists(file)) throw InputError("cannot find " + file.string() + ": is '" + c.root().string() + "' a case directory?");
+    if (!fs::exists(file))
+        throw InputError("cannot find " + file.string() + ": is '" + c.root().string() +
+                         "' a case directory?");
     return Dictionary::read(file);
 }
 
@@ -50,12 +52,14 @@ SolverRun::SolverRun(const Arguments& args, std::string application)
     std::optional<TimeDirectory> start;
     if (time_->startFrom() == "latestTime") {
         start = case_.latestTime();
-        if (!start) throw InputError("startFrom latestTime, but " + case_.root().string() + " has no time directory");
+        if (!start)
+            throw InputError("startFrom latestTime, but " + case_.root().string() + " has no time directory");
     } else {
         start = case_.findTime(time_->startTime());
         if (!start)
-            throw controlDict_.error("startTime", "no time directory for startTime " + time_->nameOf(time_->startTime()) +
-                                                      " in " + case_.root().string() + " (run particleGen first?)");
+            throw controlDict_.error("startTime", "no time directory for startTime " +
+                                                      time_->nameOf(time_->startTime()) + " in " +
+                                                      case_.root().string() + " (run particleGen first?)");
     }
     startTimeName_ = start->name;
     const fs::path particleFile = case_.timeDir(start->name) / "particles.vtp";
@@ -70,12 +74,13 @@ SolverRun::SolverRun(const Arguments& args, std::string application)
     if (fs::exists(case_.timeDir(start->name) / "state")) {
         state_ = Dictionary::read(case_.timeDir(start->name) / "state");
         time_->restore(*state_);
-        Log::info("Restarting from time " + start->name + " (step " + std::to_string(time_->timeIndex()) + ")");
+        Log::info("Restarting from time " + start->name + " (step " + std::to_string(time_->timeIndex()) +
+                  ")");
     } else {
         Log::info("Starting from time " + start->name);
     }
-    Log::info("Read " + std::to_string(particles_->size()) + " particles (" + std::to_string(particles_->dimension()) +
-              "D) from " + particleFile.string());
+    Log::info("Read " + std::to_string(particles_->size()) + " particles (" +
+              std::to_string(particles_->dimension()) + "D) from " + particleFile.string());
 }
 
 SolverRun::~SolverRun() = default;
@@ -128,7 +133,8 @@ void SolverRun::checkUnusedEntries(const Solver& solver) const {
     }
     if (count == 0) return;
     if (controlDict_.getOptional<bool>("strictDictionaries").value_or(false))
-        throw InputError(std::to_string(count) + " dictionary entries were never read (strictDictionaries yes):" + s.str());
+        throw InputError(std::to_string(count) +
+                         " dictionary entries were never read (strictDictionaries yes):" + s.str());
     Log::warning(std::to_string(count) + " dictionary entries were never read:" + s.str());
 }
 
@@ -156,7 +162,8 @@ int SolverRun::run(Solver& solver) {
     const std::int64_t startIndex = time.timeIndex();
     functions.execute(false);
 
-    Log::info("\nStarting time loop at t = " + time.timeName() + ", end time " + time.nameOf(time.endTime()) + "\n");
+    Log::info("\nStarting time loop at t = " + time.timeName() + ", end time " + time.nameOf(time.endTime()) +
+              "\n");
     double lastProgress = 0;
     int stopSignal = 0;
     bool stoppedByControl = false;
@@ -180,7 +187,8 @@ int SolverRun::run(Solver& solver) {
             stoppedByControl = true;
             if (time.stopAt() == StopAt::writeNow) write(solver);
             functions.execute(time.stopAt() == StopAt::writeNow);
-            Log::info(std::string("stopAt ") + (time.stopAt() == StopAt::writeNow ? "writeNow" : "noWriteNow") +
+            Log::info(std::string("stopAt ") +
+                      (time.stopAt() == StopAt::writeNow ? "writeNow" : "noWriteNow") +
                       " at t = " + time.timeName());
             break;
         }
@@ -195,9 +203,10 @@ int SolverRun::run(Solver& solver) {
                       (writing ? "  wrote " + time.timeName() : ""));
         }
         if (stopSignal) {
-            Log::info(std::string("\nStopped by ") + SignalHandler::name(stopSignal) + " at t = " + time.timeName() +
-                      ", step " + std::to_string(time.timeIndex()) + "; the state is written in " +
-                      (case_.root() / time.timeName()).string() + "/ (resume with startFrom latestTime)");
+            Log::info(std::string("\nStopped by ") + SignalHandler::name(stopSignal) +
+                      " at t = " + time.timeName() + ", step " + std::to_string(time.timeIndex()) +
+                      "; the state is written in " + (case_.root() / time.timeName()).string() +
+                      "/ (resume with startFrom latestTime)");
             break;
         }
     }
@@ -220,18 +229,21 @@ int SolverRun::run(Solver& solver) {
                       formatSeconds(wall).c_str(), static_cast<long long>(steps), n);
         t << row;
         for (const auto& e : norms) {
-            std::snprintf(row, sizeof row, "\n    %-20s %-14s t = %-10.6g L1 %.4e  L2 %.4e  Linf %.4e", e.source.c_str(),
-                          e.field.c_str(), e.time, e.L1, e.L2, e.Linf);
+            std::snprintf(row, sizeof row, "\n    %-20s %-14s t = %-10.6g L1 %.4e  L2 %.4e  Linf %.4e",
+                          e.source.c_str(), e.field.c_str(), e.time, e.L1, e.L2, e.Linf);
             t << row;
         }
         Log::info(t.str());
     }
     CsvFile csv(case_.postProcessing() / "runSummary" / startTimeName_ / "runSummary.csv",
-                {"time", "field", "L1", "L2", "Linf", "wallTime", "steps", "particles", "threads", "particleStepsPerSecond"});
+                {"time", "field", "L1", "L2", "Linf", "wallTime", "steps", "particles", "threads",
+                 "particleStepsPerSecond"});
     const double rate = wall > 0 ? double(n) * double(steps) / stepping.seconds() : 0;
-    if (norms.empty()) csv.row(time.value(), "none", {0, 0, 0, wall, double(steps), double(n), double(threadCount()), rate});
+    if (norms.empty())
+        csv.row(time.value(), "none", {0, 0, 0, wall, double(steps), double(n), double(threadCount()), rate});
     for (const auto& e : norms)
-        csv.row(e.time, e.source + "/" + e.field, {e.L1, e.L2, e.Linf, wall, double(steps), double(n), double(threadCount()), rate});
+        csv.row(e.time, e.source + "/" + e.field,
+                {e.L1, e.L2, e.Linf, wall, double(steps), double(n), double(threadCount()), rate});
     Log::info(stopSignal ? "End (stopped by signal)" : "End");
     return 0;
 }
@@ -242,18 +254,21 @@ void SolverRun::summary(const Solver& solver, double steppingSeconds, double sta
     (void)startTime;
     std::ostringstream s;
     char line[200];
-    std::snprintf(line, sizeof line, "\nSummary\n    wall time            %s (set-up %s, time loop %s, writing %s)\n",
+    std::snprintf(line, sizeof line,
+                  "\nSummary\n    wall time            %s (set-up %s, time loop %s, writing %s)\n",
                   formatSeconds(clock_.seconds()).c_str(), formatSeconds(setUpSeconds_).c_str(),
                   formatSeconds(steppingSeconds).c_str(), formatSeconds(writeSeconds_).c_str());
     s << line;
     s << "    steps                " << time.timeIndex() << " to t = " << time.timeName() << "\n";
     s << "    particles            " << n << "\n";
     std::snprintf(line, sizeof line, "    particle-steps/s     %.4g (%d threads)\n",
-                  steppingSeconds > 0 ? double(n) * double(time.timeIndex()) / steppingSeconds : 0.0, threadCount());
+                  steppingSeconds > 0 ? double(n) * double(time.timeIndex()) / steppingSeconds : 0.0,
+                  threadCount());
     s << line;
     s << "    peak memory          " << formatBytes(double(peakMemoryBytes())) << "\n";
     for (const auto& [phase, seconds] : solver.phaseTimes()) {
-        std::snprintf(line, sizeof line, "    phase %-14s %s (%.1f%%)\n", phase.c_str(), formatSeconds(seconds).c_str(),
+        std::snprintf(line, sizeof line, "    phase %-14s %s (%.1f%%)\n", phase.c_str(),
+                      formatSeconds(seconds).c_str(),
                       steppingSeconds > 0 ? 100 * seconds / steppingSeconds : 0.0);
         s << line;
     }

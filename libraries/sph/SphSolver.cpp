@@ -1,10 +1,11 @@
 // impactSph's discretisation (Zisis 2017; sph-impact.md §2–4), for a pair i, j with x_ij = x_i − x_j,
 // r̂ = x_ij/|x_ij|, v_ij = v_i − v_j and ∇_iW_ij(h) = r̂ dW/dr:
 //
-//   density sums (loop A)  S_i = Σ_j b_j W_ij(h_i),  ω_i = 1 + h_i/(d S_i) Σ_j b_j ∂W_ij/∂h(h_i),  ñ_i = Σ_j W_ij(h_i)
-//   continuity             dρ_i/dt = (c_i/ω_i) Σ_j b_j v_ij·∇_iW_ij(h_i)  (+ mass flux, Dissipation.hpp)
-//   momentum               m_i dv_i/dt = −Σ_j [a_i b_j P_i/ω_i ∇_iW_ij(h_i) + a_j b_i P_j/ω_j ∇_iW_ij(h_j)]  (+ viscosity)
-//   energy                 de_i/dt = (P_i/ρ_i²)(c_i/ω_i) Σ_j b_j v_ij·∇_iW_ij(h_i)  (+ heating, conduction)
+//   density sums (loop A)  S_i = Σ_j b_j W_ij(h_i),  ω_i = 1 + h_i/(d S_i) Σ_j b_j ∂W_ij/∂h(h_i),  ñ_i = Σ_j
+//   W_ij(h_i) continuity             dρ_i/dt = (c_i/ω_i) Σ_j b_j v_ij·∇_iW_ij(h_i)  (+ mass flux,
+//   Dissipation.hpp) momentum               m_i dv_i/dt = −Σ_j [a_i b_j P_i/ω_i ∇_iW_ij(h_i) + a_j b_i
+//   P_j/ω_j ∇_iW_ij(h_j)]  (+ viscosity) energy                 de_i/dt = (P_i/ρ_i²)(c_i/ω_i) Σ_j b_j
+//   v_ij·∇_iW_ij(h_i)  (+ heating, conduction)
 //
 // Strength (Zisis 2017 eqs. 6.5–6.9, volume form without ω; sign of 6.9 corrected, note §12):
 //   velocity gradient      L_i = −Σ_j (m_j/ρ_j) v_ij ⊗ ∇_iW_ij(h_i),   (L_ab = ∂v_a/∂x_b)
@@ -29,8 +30,8 @@
 #include "solver/MaterialAssignment.hpp"
 #include "solver/SolverRun.hpp"
 
-#include <algorithm>
 #include <Eigen/Eigenvalues>
+#include <algorithm>
 
 #include <cmath>
 #include <cstdio>
@@ -48,7 +49,8 @@ namespace {
 bool readMomentumForm(const Dictionary& properties) {
     const std::string form = properties.getOrDefault<std::string>("momentum", "variational");
     if (form != "variational" && form != "difference")
-        throw properties.error("momentum", "'" + form + "' is not valid; valid choices: variational | difference");
+        throw properties.error("momentum",
+                               "'" + form + "' is not valid; valid choices: variational | difference");
     return form == "difference";
 }
 
@@ -59,7 +61,8 @@ bool readMomentumForm(const Dictionary& properties) {
 bool readIntegrator(const Dictionary& properties) {
     const std::string type = properties.getOrDefault<std::string>("integrator", "leapfrog");
     if (type != "leapfrog" && type != "predictorCorrector")
-        throw properties.error("integrator", "'" + type + "' is not valid; valid choices: leapfrog | predictorCorrector");
+        throw properties.error("integrator",
+                               "'" + type + "' is not valid; valid choices: leapfrog | predictorCorrector");
     return type == "predictorCorrector";
 }
 
@@ -118,7 +121,8 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
         artificialStressEpsilon_ = as->getOrDefault<double>("epsilon", 0.3);
         artificialStressExponent_ = as->getOrDefault<double>("exponent", 4.0);
         if (artificialStressEpsilon_ < 0) throw as->error("epsilon", "epsilon must be non-negative");
-        if (!anyStrength_) throw as->error("epsilon", "artificial stress acts on solids: no material has a strength law");
+        if (!anyStrength_)
+            throw as->error("epsilon", "artificial stress acts on solids: no material has a strength law");
     }
     if (std::filesystem::exists(run.runCase().constantFile("boundaryConditions"))) {
         boundaryDict_ = run.runCase().readConstant("boundaryConditions");
@@ -154,16 +158,19 @@ void SphSolver<Dim>::initialiseFields() {
         e_ = &particles_->scalarField("specificInternalEnergy");
         if (!hadEnergy) {
             if (!particles_->hasField("pressure") && n > 0)
-                throw InputError("the particle file has neither 'specificInternalEnergy' nor 'pressure': one of them "
-                                 "sets the initial thermodynamic state");
+                throw InputError(
+                    "the particle file has neither 'specificInternalEnergy' nor 'pressure': one of them "
+                    "sets the initial thermodynamic state");
             // p_ was read from the file: invert the equation of state for e.
-            for (std::size_t i = 0; i < n; ++i) (*e_)[i] = energyForPressure(*materials_[material_[i]].eos, rho_[i], p_[i]);
+            for (std::size_t i = 0; i < n; ++i)
+                (*e_)[i] = energyForPressure(*materials_[material_[i]].eos, rho_[i], p_[i]);
         }
     }
     for (std::size_t i = 0; i < n; ++i) {
         if (!(m_[i] > 0) || !(rho_[i] > 0))
             throw InputError("particle " + std::to_string(particles_->globalId()[i]) + " has mass " +
-                             std::to_string(m_[i]) + " and density " + std::to_string(rho_[i]) + ": both must be positive");
+                             std::to_string(m_[i]) + " and density " + std::to_string(rho_[i]) +
+                             ": both must be positive");
         if (!(h_[i] > 0)) h_[i] = hLaw_->initial(Dim, m_[i], rho_[i]);
     }
     if (scheme_->gradH()) omega_ = &particles_->scalarField("omega");
@@ -265,8 +272,9 @@ template <int Dim>
 void SphSolver<Dim>::solveSmoothingLength() {
     Stopwatch watch;
     if (!scheme_->explicitSummation())
-        throw properties_.error("smoothingLength", "the summation smoothing length needs an explicit density sum "
-                                                   "(densityScheme mass or number)");
+        throw properties_.error("smoothingLength",
+                                "the summation smoothing length needs an explicit density sum "
+                                "(densityScheme mass or number)");
     const std::size_t n = nReal_;
     scheme_->coefficients(x_.size(), m_.data(), rho_.data(), a_.data(), b_.data(), cc_.data());
     const double eta = hLaw_->eta(), tolerance = hLaw_->tolerance();
@@ -306,7 +314,8 @@ void SphSolver<Dim>::solveSmoothingLength() {
     copyToGhosts(h_);
     if (std::any_of(failed.begin(), failed.end(), [](int v) { return v != 0; }))
         Log::warning("summation smoothing length: some particles did not converge to the tolerance in " +
-                     std::to_string(maxIterations) + " iterations (step " + std::to_string(time().timeIndex()) + ")");
+                     std::to_string(maxIterations) + " iterations (step " +
+                     std::to_string(time().timeIndex()) + ")");
     sumSeconds_ += watch.seconds();
 }
 
@@ -396,7 +405,8 @@ void SphSolver<Dim>::computeDensitySums() {
     const double* b = b_.data();
     const double* volume = volume_.data();
     parallelForWork(n, neighbours_.list->pairCount(), [&](std::size_t i) {
-        const double hi = h_[i], invHi = invH_[i], wNormi = wNorm_[i], dhNormi = dhNorm_[i], gradNormi = gradNorm_[i];
+        const double hi = h_[i], invHi = invH_[i], wNormi = wNorm_[i], dhNormi = dhNorm_[i],
+                     gradNormi = gradNorm_[i];
         double w0, dw0;
         W.shape(0.0, w0, dw0);
         double sum = b[i] * (wNormi * w0), count = wNormi * w0, dh = b[i] * (dhNormi * (Dim * w0));
@@ -482,7 +492,8 @@ void SphSolver<Dim>::computeRates() {
             Eigen::SelfAdjointEigenSolver<Tensor<Dim>> eigen(sigma);
             Vector<Dim> r = Vector<Dim>::Zero();
             for (int a = 0; a < Dim; ++a)
-                if (eigen.eigenvalues()[a] > 0) r[a] = -artificialStressEpsilon_ * eigen.eigenvalues()[a] / (rho_[i] * rho_[i]);
+                if (eigen.eigenvalues()[a] > 0)
+                    r[a] = -artificialStressEpsilon_ * eigen.eigenvalues()[a] / (rho_[i] * rho_[i]);
             artificialStress_[i] = eigen.eigenvectors() * r.asDiagonal() * eigen.eigenvectors().transpose();
         });
     }
@@ -548,11 +559,13 @@ void SphSolver<Dim>::computeRates() {
                 const double mjF = m[j] * invRhoBar * F;
                 force += (mi * d.av * vSignal * vr * mjF) * rhat;
                 if (massFluxOn) massFlux += d.arho * (Pi - p[j]) / signal(d.brho) * mjF;
-                heating += (-0.5 * d.av * vSignal * vr * vr + d.ae * signal(d.be) * (ei - (e ? e[j] : 0.0))) * mjF;
+                heating +=
+                    (-0.5 * d.av * vSignal * vr * vr + d.ae * signal(d.be) * (ei - (e ? e[j] : 0.0))) * mjF;
             } else if (monaghan && vr < 0) {
                 const double hBar = 0.5 * (hi + h[j]);
                 const double mu = hBar * vij.dot(xij) / (r * r + 0.01 * hBar * hBar);
-                double viscous = (-d.alpha * 0.5 * (ci + c[j]) * mu + d.beta * mu * mu) / (0.5 * (rhoi + rho[j]));
+                double viscous =
+                    (-d.alpha * 0.5 * (ci + c[j]) * mu + d.beta * mu * mu) / (0.5 * (rhoi + rho[j]));
                 if (!balsara.empty()) viscous *= 0.5 * (balsara[i] + balsara[j]);
                 const double F = 0.5 * (dWi + dWj);
                 force -= (mi * m[j] * viscous * F) * rhat;
@@ -577,9 +590,11 @@ void SphSolver<Dim>::computeRates() {
                     const double r = xij.norm();
                     if (r == 0) continue;
                     const double hBar = 0.5 * (hi + h_[j]);
-                    const double f = std::pow(W_.W(r, hBar) / W_.W(hBar / eta, hBar), artificialStressExponent_);
+                    const double f =
+                        std::pow(W_.W(r, hBar) / W_.W(hBar / eta, hBar), artificialStressExponent_);
                     const double gradBar = 0.5 * (W_.dWdr(r, hi) + W_.dWdr(r, h_[j]));
-                    const Vector<Dim> pairForce = m_[j] * f * gradBar / r * ((artificialStress_[i] + artificialStress_[j]) * xij);
+                    const Vector<Dim> pairForce =
+                        m_[j] * f * gradBar / r * ((artificialStress_[i] + artificialStress_[j]) * xij);
                     extra += pairForce;
                     work -= 0.5 * (v_[i] - v_[j]).dot(pairForce);
                 }
@@ -653,8 +668,10 @@ template <int Dim>
 void SphSolver<Dim>::computeStressRate() {
     Stopwatch watch;
     parallelFor(nReal_, [&](std::size_t i) {
-        if (const auto& law = materials_[material_[i]].strength) law->stressRate(strengthFields(i, &(*tau_)[i]));
-        else dtaudt_[i] = SymmTensor<Dim>{};
+        if (const auto& law = materials_[material_[i]].strength)
+            law->stressRate(strengthFields(i, &(*tau_)[i]));
+        else
+            dtaudt_[i] = SymmTensor<Dim>{};
     });
     strengthSeconds_ += watch.seconds();
 }
@@ -662,7 +679,8 @@ void SphSolver<Dim>::computeStressRate() {
 template <int Dim>
 void SphSolver<Dim>::returnToYieldSurface(std::vector<SymmTensor<Dim>>& tau, double dt) {
     parallelFor(x_.size(), [&](std::size_t i) {
-        if (const auto& law = materials_[material_[i]].strength) law->returnToYieldSurface(strengthFields(i, &tau[i]), dt);
+        if (const auto& law = materials_[material_[i]].strength)
+            law->returnToYieldSurface(strengthFields(i, &tau[i]), dt);
     });
 }
 
@@ -671,12 +689,13 @@ TimeStepVote SphSolver<Dim>::stableTimeStep() {
     ensureRates();
     const double xi = time().maxCo();
     const std::size_t n = x_.size();
-    TimeStepVote vote{xi * Reduce::min(n, [&](std::size_t i) { return h_[i] / (v_[i].norm() + c_[i]); }), "Courant"};
+    TimeStepVote vote{xi * Reduce::min(n, [&](std::size_t i) { return h_[i] / (v_[i].norm() + c_[i]); }),
+                      "Courant"};
     if (densityRateLimit_ > 0 && !scheme_->summation()) {
         const double limit = densityRateLimit_ * Reduce::min(n, [&](std::size_t i) {
-            const double rate = std::abs(drhodt_[i]);
-            return rate > 0 ? rho_[i] / rate : std::numeric_limits<double>::infinity();
-        });
+                                 const double rate = std::abs(drhodt_[i]);
+                                 return rate > 0 ? rho_[i] / rate : std::numeric_limits<double>::infinity();
+                             });
         if (limit < vote.deltaT) vote = {limit, "density rate"};
     }
     return vote;
@@ -702,7 +721,8 @@ void SphSolver<Dim>::stepPredictorCorrector(double dt) {
             if (continuity) rho_[i] = rho0[i] + span * drhodt_[i];
             if (e_) (*e_)[i] = e0[i] + span * dedt_[i];
             if (tau_)
-                for (int k = 0; k < SymmTensor<Dim>::size; ++k) (*tau_)[i].c[k] = tau0[i].c[k] + span * dtaudt_[i].c[k];
+                for (int k = 0; k < SymmTensor<Dim>::size; ++k)
+                    (*tau_)[i].c[k] = tau0[i].c[k] + span * dtaudt_[i].c[k];
         });
     };
     const double t = time().value();
@@ -770,7 +790,8 @@ void SphSolver<Dim>::step(double dt) {
         });
         returnToYieldSurface(tauHalf, weight);
         parallelFor(n, [&](std::size_t i) {
-            for (int k = 0; k < SymmTensor<Dim>::size; ++k) tau[i].c[k] = tauHalf[i].c[k] + 0.5 * dt * dtaudt_[i].c[k];
+            for (int k = 0; k < SymmTensor<Dim>::size; ++k)
+                tau[i].c[k] = tauHalf[i].c[k] + 0.5 * dt * dtaudt_[i].c[k];
         });
         std::vector<double> history;
         if (plasticStrain_) history = *plasticStrain_;  // the synchronised return must not advance it twice
@@ -812,10 +833,10 @@ void SphSolver<Dim>::checkState(const char* phase) const {
         if (!bad(i)) continue;
         std::ostringstream s;
         s.precision(6);
-        s << "phase " << phase << ", step " << time().timeIndex() + 1 << ", t = " << time().value() << ": particle "
-          << particles_->globalId()[i] << " (region " << particles_->region()[i] << ", material "
-          << materials_[material_[i]].name << ") has density " << rho_[i] << ", pressure " << p_[i]
-          << ", sound speed " << c_[i] << ", h " << h_[i];
+        s << "phase " << phase << ", step " << time().timeIndex() + 1 << ", t = " << time().value()
+          << ": particle " << particles_->globalId()[i] << " (region " << particles_->region()[i]
+          << ", material " << materials_[material_[i]].name << ") has density " << rho_[i] << ", pressure "
+          << p_[i] << ", sound speed " << c_[i] << ", h " << h_[i];
         if (e_) s << ", e " << (*e_)[i];
         s << ", |v| " << v_[i].norm() << "; " << count << " particles affected";
         if (std::isfinite(rho_[i]) && !(c_[i] > 0))
@@ -861,10 +882,13 @@ std::vector<std::pair<std::string, double>> SphSolver<Dim>::phaseTimes() const {
 template <int Dim>
 std::vector<std::string> SphSolver<Dim>::summary(double loopSeconds) const {
     char line[160];
-    std::snprintf(line, sizeof line, "pair interactions/s  %.4g (%.1f candidate pairs per particle, %zu list rebuilds in %zu steps)",
-                  loopSeconds > 0 ? pairInteractions_ / loopSeconds : 0.0,
-                  neighbourUpdates_ && !x_.empty() ? pairInteractions_ / double(neighbourUpdates_) / double(x_.size()) : 0.0,
-                  rebuilds_, neighbourUpdates_);
+    std::snprintf(
+        line, sizeof line,
+        "pair interactions/s  %.4g (%.1f candidate pairs per particle, %zu list rebuilds in %zu steps)",
+        loopSeconds > 0 ? pairInteractions_ / loopSeconds : 0.0,
+        neighbourUpdates_ && !x_.empty() ? pairInteractions_ / double(neighbourUpdates_) / double(x_.size())
+                                         : 0.0,
+        rebuilds_, neighbourUpdates_);
     return {line};
 }
 

@@ -151,7 +151,7 @@ private:
     std::vector<double> invH_, wNorm_, dhNorm_, gradNorm_, volume_;
     std::vector<double> pressureTerm_;  // a_j P_j/ω_j, scratch of computeRates
     std::vector<double> radius_;        // scratch of updateNeighbours
-    bool gradientWithSums_ = false;  // the velocity gradient was computed in the density-sum loop
+    bool gradientWithSums_ = false;     // the velocity gradient was computed in the density-sum loop
     // Candidate pairs within the support plus a skin, rebuilt only when particles have moved (or h
     // grown) by more than the skin allows; pairs beyond the support cost a kernel evaluation
     // that returns zero. neighbours_ points at the current list.

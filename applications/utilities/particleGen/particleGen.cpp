@@ -10,8 +10,8 @@
 #include <filesystem>
 
 int main(int argc, char** argv) {
-    const mfdyn::ApplicationInfo info{"particleGen", "Generate particles from system/particleGenDict into 0/particles.vtp.",
-                                      {}, {}, true};
+    const mfdyn::ApplicationInfo info{
+        "particleGen", "Generate particles from system/particleGenDict into 0/particles.vtp.", {}, {}, true};
     return mfdyn::runApplication(argc, argv, info, [](const mfdyn::Arguments& args) {
         using namespace mfdyn;
         Case runCase(args.caseDir());
@@ -30,8 +30,9 @@ int main(int argc, char** argv) {
         pvd.add(0.0, std::string("0/") + particleFileName);
         pvd.write();
         Log::info(generator.reportTable());
-        Log::info("Wrote " + std::to_string(particles->size()) + " particles (" + std::to_string(particles->dimension()) +
-                  "D) to " + (runCase.root() / "0" / particleFileName).string());
+        Log::info("Wrote " + std::to_string(particles->size()) + " particles (" +
+                  std::to_string(particles->dimension()) + "D) to " +
+                  (runCase.root() / "0" / particleFileName).string());
         return 0;
     });
 }

@@ -92,7 +92,8 @@ TEST(Time, FixedDeltaTAboveTheStableStepIsARunErrorNamingTheLimit) {
 
 TEST(Time, AdjustedStepGrowsAtMostTwentyPercentAndRespectsMaxDeltaT) {
     Time time = makeTime(
-        "endTime 10; deltaT 0.001; adjustTimeStep yes; maxDeltaT 0.002; writeControl timeStep; writeInterval 1000;");
+        "endTime 10; deltaT 0.001; adjustTimeStep yes; maxDeltaT 0.002; writeControl timeStep; writeInterval "
+        "1000;");
     const double first = time.chooseDeltaT({1.0, "vote"});
     EXPECT_NEAR(first, 0.0012, 1e-15);
     time.advance(first);
@@ -120,9 +121,11 @@ TEST(Time, InvalidChoicesListTheValidOnes) {
 }
 
 TEST(Time, StateRoundTripsExactly) {
-    Time time = makeTime("endTime 1; deltaT 0.1; adjustTimeStep yes; writeControl adjustableRunTime; writeInterval 0.3;");
+    Time time = makeTime(
+        "endTime 1; deltaT 0.1; adjustTimeStep yes; writeControl adjustableRunTime; writeInterval 0.3;");
     for (int k = 0; k < 7; ++k) time.advance(time.chooseDeltaT({0.0123456789, "vote"}));
-    Time copy = makeTime("endTime 1; deltaT 0.1; adjustTimeStep yes; writeControl adjustableRunTime; writeInterval 0.3;");
+    Time copy = makeTime(
+        "endTime 1; deltaT 0.1; adjustTimeStep yes; writeControl adjustableRunTime; writeInterval 0.3;");
     copy.restore(Dictionary::parse(time.state(), "state"));
     EXPECT_EQ(copy.value(), time.value());
     EXPECT_EQ(copy.deltaT(), time.deltaT());

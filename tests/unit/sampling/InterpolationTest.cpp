@@ -97,7 +97,9 @@ void checkLinear(int n, const std::string& method, double tolerance) {
 // MLS: a + b.(x_j - x) fits a linear field exactly, so only round-off remains: the solve of
 // a 3x3 (4x4) system with O(1) entries and sums of ~20-70 terms of O(1), i.e. ~1e-14; 1e-10
 // leaves room for the conditioning of a jittered neighbourhood.
-TEST(Interpolation, mlsReproducesLinearField1D) { checkLinear<1>(101, "mls", 1e-10); }
+TEST(Interpolation, mlsReproducesLinearField1D) {
+    checkLinear<1>(101, "mls", 1e-10);
+}
 TEST(Interpolation, mlsReproducesLinearField2D) {
     checkLinear<2>(41, "mls", 1e-10);
 }

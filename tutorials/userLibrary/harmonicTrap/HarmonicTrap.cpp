@@ -28,7 +28,8 @@ double HarmonicTrap::potential(const double* x) const {
     return 0.5 * omega_ * omega_ * r2;
 }
 
-bool HarmonicTrap::exactTrajectory(const double* x0, const double* v0, double tau, double* x, double* v) const {
+bool HarmonicTrap::exactTrajectory(const double* x0, const double* v0, double tau, double* x,
+                                   double* v) const {
     const double c = std::cos(omega_ * tau), s = std::sin(omega_ * tau);
     for (int d = 0; d < dimension(); ++d) {
         x[d] = centre_[d] + (x0[d] - centre_[d]) * c + v0[d] / omega_ * s;
@@ -38,8 +39,11 @@ bool HarmonicTrap::exactTrajectory(const double* x0, const double* v0, double ta
 }
 
 // Verlet is stable for ω dt < 2; a twentieth of a period keeps the phase error small.
-mfdyn::TimeStepVote HarmonicTrap::stableTimeStep() const { return {0.05 * 2 * M_PI / omega_, "harmonicTrap period/20"}; }
+mfdyn::TimeStepVote HarmonicTrap::stableTimeStep() const {
+    return {0.05 * 2 * M_PI / omega_, "harmonicTrap period/20"};
+}
 
-MFDYN_REGISTER(mfdyn::BodyForce, HarmonicTrap, "harmonicTrap", "isotropic harmonic trap a = -omega^2 (x - centre) [user library]");
+MFDYN_REGISTER(mfdyn::BodyForce, HarmonicTrap, "harmonicTrap",
+               "isotropic harmonic trap a = -omega^2 (x - centre) [user library]");
 
 }  // namespace myModels
