@@ -63,6 +63,10 @@ std::string Keyword::typeText() const {
             return "a switch (yes/no)";
         case Type::dictionary:
             return "a dictionary { ... }";
+        case Type::wordList:
+            return "a list of names (...)";
+        case Type::table:
+            return "a table of rows (...)";
     }
     return "?";
 }
@@ -90,6 +94,7 @@ std::string Keyword::kindText() const {
 
 std::string Keyword::sampleValue() const {
     if (!defaultValue.empty()) return defaultValue;
+    if (!example.empty()) return example;
     switch (type) {
         case Type::word:
             return words.empty() ? "name" : words.front();
@@ -102,6 +107,10 @@ std::string Keyword::sampleValue() const {
         }
         case Type::dictionary:
             return "{ }";
+        case Type::wordList:
+            return "(name)";
+        case Type::table:
+            return "((0 (0 0 0)))";
         case Type::integer:
         case Type::scalar:
             break;
@@ -158,6 +167,17 @@ KeywordSchema& KeywordSchema::flag(std::string name, std::string meaning) {
 
 KeywordSchema& KeywordSchema::dictionary(std::string name, std::string meaning) {
     keywords_.push_back(makeKeyword(std::move(name), "-", std::move(meaning), Keyword::Type::dictionary));
+    return *this;
+}
+
+KeywordSchema& KeywordSchema::words(std::string name, std::string meaning) {
+    keywords_.push_back(makeKeyword(std::move(name), "-", std::move(meaning), Keyword::Type::wordList));
+    return *this;
+}
+
+KeywordSchema& KeywordSchema::table(std::string name, std::string unit, std::string meaning) {
+    keywords_.push_back(
+        makeKeyword(std::move(name), std::move(unit), std::move(meaning), Keyword::Type::table));
     return *this;
 }
 
@@ -260,6 +280,11 @@ KeywordSchema& KeywordSchema::ofLength(std::size_t components) {
     if (k.kind == Keyword::Kind::defaulted && k.defaultList.size() != components)
         throw std::logic_error(family_ + " " + type_ + ": default of " + k.name + " has another length");
     k.length = components;
+    return *this;
+}
+
+KeywordSchema& KeywordSchema::example(std::string value) {
+    last("example").example = std::move(value);
     return *this;
 }
 
@@ -406,6 +431,14 @@ KeywordValues KeywordSchema::read(const Dictionary& dict) const {
             case Keyword::Type::dictionary:
                 from.subDict(k.name);
                 break;
+            case Keyword::Type::wordList:
+                v.names = from.get<std::vector<std::string>>(k.name);
+                if (v.names.empty())
+                    throw from.error(k.name, "expected at least one name (" + k.meaning + "), found ()");
+                break;
+            case Keyword::Type::table:
+                from.entry(k.name);  // its rows are the model's to parse
+                break;
         }
         out.values_.push_back(std::move(v));
     }
@@ -470,6 +503,10 @@ const Dictionary& KeywordValues::dictionary(std::string_view name) const {
     if (!v.holder)
         throw std::logic_error(model_ + ": optional dictionary '" + std::string(name) + "' not given");
     return v.holder->subDict(name);
+}
+
+const std::vector<std::string>& KeywordValues::words(std::string_view name) const {
+    return value(name, Keyword::Type::wordList).names;
 }
 
 bool KeywordValues::given(std::string_view name) const {

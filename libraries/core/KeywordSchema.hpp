@@ -46,7 +46,9 @@ struct KeywordBound {
 
 struct Keyword {
     enum class Kind { required, defaulted, optional };
-    enum class Type { scalar, integer, word, vector, switchValue, dictionary };
+    // wordList: a list of names, `(wall lid)`; table: a list of rows the model parses itself
+    // (a time table `((0 (0 0 0)) (1e-3 (0 -1 0)))`), for which the schema checks presence only.
+    enum class Type { scalar, integer, word, vector, switchValue, dictionary, wordList, table };
 
     std::string name;
     std::string unit;  // SI; "-" for dimensionless
@@ -58,6 +60,7 @@ struct Keyword {
     std::vector<double> defaultList;  // the default of a vector
     std::size_t length = 0;           // the number of components of a vector; 0: any
     std::vector<std::string> words;   // the valid words of Type::word
+    std::string example;              // a value for documentation excerpts ("(1 0 0)"), when given
     std::optional<KeywordBound> lower, upper;
     bool orEnclosing = false;
 
@@ -67,7 +70,8 @@ struct Keyword {
     std::string boundsText() const;
     // "required", "default 7", "optional"
     std::string kindText() const;
-    // An example value for a dictionary excerpt: the default, else a value inside the bounds.
+    // An example value for a dictionary excerpt: the default, else the declared example, else a
+    // value inside the bounds.
     std::string sampleValue() const;
 };
 
@@ -89,6 +93,8 @@ public:
     KeywordSchema& vector(std::string name, std::string unit, std::string meaning);
     KeywordSchema& flag(std::string name, std::string meaning);  // a switch: yes/no, on/off, true/false
     KeywordSchema& dictionary(std::string name, std::string meaning);
+    KeywordSchema& words(std::string name, std::string meaning);  // a non-empty list of names
+    KeywordSchema& table(std::string name, std::string unit, std::string meaning);
 
     // Modifiers of the keyword declared last.
     KeywordSchema& orDefault(double value);
@@ -104,6 +110,9 @@ public:
     KeywordSchema& atMost(double bound);
     KeywordSchema& orEnclosing();
     KeywordSchema& ofLength(std::size_t components);  // a vector of exactly this many values
+    // The value a documentation excerpt shows, where the default rule (zeros, the lower bound)
+    // would show an invalid one: a plane's normal "(1 0 0)".
+    KeywordSchema& example(std::string value);
 
     // The keywords of `other` (a base model's), after those declared so far.
     KeywordSchema& append(const KeywordSchema& other);
@@ -141,6 +150,7 @@ public:
     bool flag(std::string_view name) const;
     const std::vector<double>& vector(std::string_view name) const;
     const Dictionary& dictionary(std::string_view name) const;
+    const std::vector<std::string>& words(std::string_view name) const;  // empty when not given
     // True when the keyword was given (in the model's or, for orEnclosing, the enclosing dictionary).
     bool given(std::string_view name) const;
     // An InputError located at the entry `name` in whichever dictionary holds it (for checks
@@ -160,6 +170,7 @@ private:
         bool flag = false;
         std::string text;
         std::vector<double> list;
+        std::vector<std::string> names;
     };
     const Value& value(std::string_view name, Keyword::Type type) const;
 

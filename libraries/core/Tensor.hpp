@@ -3,6 +3,7 @@
 // Vectors and tensors are Eigen types; a symmetric tensor stores its Dim(Dim+1)/2 independent
 // components (xx, yy, zz, xy, yz, xz order as in VTK, truncated to Dim).
 #include "core/Dictionary.hpp"
+#include "core/KeywordSchema.hpp"
 
 #include <Eigen/Core>
 #include <array>
@@ -66,5 +67,22 @@ struct ValueTraits<Eigen::Matrix<double, Rows, Cols>> {
         return "a list of " + std::to_string(Rows * Cols) + " reals" + (Cols > 1 ? " (row by row)" : "");
     }
 };
+
+// A vector keyword read through a schema (KeywordSchema::vector) as a Dim-vector, by the rule of
+// the conversion above: at least Dim components, those beyond Dim zero.
+template <int Dim>
+Vector<Dim> keywordVector(const KeywordValues& values, std::string_view name) {
+    const std::vector<double>& list = values.vector(name);
+    const std::string expected = "expected a list of " + std::to_string(Dim) + " reals";
+    if (int(list.size()) < Dim)
+        throw values.error(name, expected + ", found " + std::to_string(list.size()) + " values");
+    for (std::size_t k = Dim; k < list.size(); ++k)
+        if (list[k] != 0.0)
+            throw values.error(name, expected + ": component " + std::to_string(k + 1) +
+                                         " is non-zero but the case has fewer dimensions");
+    Vector<Dim> v;
+    for (int k = 0; k < Dim; ++k) v[k] = list[std::size_t(k)];
+    return v;
+}
 
 }  // namespace mfdyn
