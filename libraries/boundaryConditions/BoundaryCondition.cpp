@@ -17,17 +17,27 @@ std::string lastScope(const std::string& scope) {
 
 }  // namespace
 
+KeywordSchema commonBoundaryConditionKeywords() {
+    return KeywordSchema("boundaryCondition", "common")
+        .append(selectionKeywords())
+        .scalar("releaseTime", "s", "the condition holds while t < releaseTime (default: for ever)")
+        .atLeast(0)
+        .optional();
+}
+
+template <int Dim>
+BoundaryCondition<Dim>::BoundaryCondition(const KeywordValues& values, const ParticleSet<Dim>& particles,
+                                          bool allByDefault)
+    : selection_(values, particles, allByDefault),
+      name_(lastScope(values.dict().scope())),
+      type_(values.dict().get<std::string>("type")) {
+    if (auto release = values.optionalScalar("releaseTime")) releaseTime_ = *release;
+}
+
 template <int Dim>
 BoundaryCondition<Dim>::BoundaryCondition(const Dictionary& dict, const ParticleSet<Dim>& particles,
                                           bool allByDefault)
-    : selection_(dict, particles, allByDefault),
-      name_(lastScope(dict.scope())),
-      type_(dict.get<std::string>("type")) {
-    if (auto release = dict.getOptional<double>("releaseTime")) {
-        if (!(*release >= 0.0)) throw dict.error("releaseTime", "expected a time >= 0 [s]");
-        releaseTime_ = *release;
-    }
-}
+    : BoundaryCondition(commonBoundaryConditionKeywords().read(dict), particles, allByDefault) {}
 
 template <int Dim>
 BoundaryCondition<Dim>::~BoundaryCondition() = default;

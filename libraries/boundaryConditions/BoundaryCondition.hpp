@@ -56,6 +56,17 @@
 
 namespace mfdyn {
 
+// The keywords of every condition: the selection's (Selection.hpp) and releaseTime. A type's
+// schema declares its own keywords and appends these:
+//
+//     KeywordSchema MirrorPlane<Dim>::keywords() {
+//         return KeywordSchema("boundaryCondition", "mirrorPlane")
+//             .append(planeKeywords())
+//             .flag("noSlip", "...").orDefault(false)
+//             .append(commonBoundaryConditionKeywords());
+//     }
+KeywordSchema commonBoundaryConditionKeywords();
+
 template <int Dim>
 class BoundaryCondition {
 public:
@@ -112,6 +123,9 @@ public:
 protected:
     // `allByDefault`: without `regions`/`shape`/`all` the selection is every particle (planes,
     // which select by side) rather than an input error (fixed, prescribedVelocity).
+    // From the values of the type's schema, which appends commonBoundaryConditionKeywords().
+    BoundaryCondition(const KeywordValues& values, const ParticleSet<Dim>& particles, bool allByDefault);
+    // For a type without a schema of its own (a user's library): reads the common keywords only.
     BoundaryCondition(const Dictionary& dict, const ParticleSet<Dim>& particles, bool allByDefault);
 
     virtual void velocityConstraint(ParticleSet<Dim>&, std::vector<VectorType>&, double) {}

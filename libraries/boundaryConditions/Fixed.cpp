@@ -13,8 +13,13 @@
 namespace mfdyn {
 
 template <int Dim>
+KeywordSchema Fixed<Dim>::keywords() {
+    return KeywordSchema("boundaryCondition", "fixed").append(commonBoundaryConditionKeywords());
+}
+
+template <int Dim>
 Fixed<Dim>::Fixed(const Dictionary& dict, const ParticleSet<Dim>& particles)
-    : BoundaryCondition<Dim>(dict, particles, false) {}
+    : BoundaryCondition<Dim>(keywords().read(dict), particles, false) {}
 
 template <int Dim>
 void Fixed<Dim>::velocityConstraint(ParticleSet<Dim>&, std::vector<VectorType>& v, double) {

@@ -9,6 +9,7 @@ class Fixed : public BoundaryCondition<Dim> {
 public:
     using typename BoundaryCondition<Dim>::VectorType;
     Fixed(const Dictionary& dict, const ParticleSet<Dim>& particles);
+    static KeywordSchema keywords();
 
 protected:
     void velocityConstraint(ParticleSet<Dim>&, std::vector<VectorType>& v, double) override;

@@ -7,8 +7,13 @@
 namespace mfdyn {
 
 template <int Dim>
+KeywordSchema Free<Dim>::keywords() {
+    return KeywordSchema("boundaryCondition", "free").append(commonBoundaryConditionKeywords());
+}
+
+template <int Dim>
 Free<Dim>::Free(const Dictionary& dict, const ParticleSet<Dim>& particles)
-    : BoundaryCondition<Dim>(dict, particles, true) {}
+    : BoundaryCondition<Dim>(keywords().read(dict), particles, true) {}
 
 template class Free<1>;
 template class Free<2>;

@@ -9,6 +9,7 @@ template <int Dim>
 class Free : public BoundaryCondition<Dim> {
 public:
     Free(const Dictionary& dict, const ParticleSet<Dim>& particles);
+    static KeywordSchema keywords();
 };
 
 }  // namespace mfdyn

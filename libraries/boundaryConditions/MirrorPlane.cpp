@@ -26,17 +26,34 @@
 namespace mfdyn {
 
 template <int Dim>
+KeywordSchema MirrorPlane<Dim>::keywords() {
+    return KeywordSchema("boundaryCondition", "mirrorPlane")
+        .append(planeKeywords())
+        .flag("noSlip", "ghost velocity -v (no slip) instead of the reflected v (free slip)")
+        .orDefault(false)
+        .scalar("thicknessFactor", "-", "the mirrored layer's thickness in units of h_max")
+        .greaterThan(0)
+        .orDefault(3.0)
+        .scalar("thickness", "m", "the mirrored layer's thickness (instead of thicknessFactor)")
+        .greaterThan(0)
+        .optional()
+        .append(commonBoundaryConditionKeywords());
+}
+
+template <int Dim>
 MirrorPlane<Dim>::MirrorPlane(const Dictionary& dict, const ParticleSet<Dim>& particles)
-    : BoundaryCondition<Dim>(dict, particles, true),
-      plane_(dict, particles.position()),
-      noSlip_(dict.getOrDefault<bool>("noSlip", false)),
-      thicknessFactor_(dict.getOrDefault<double>("thicknessFactor", 3.0)),
-      thickness_(dict.getOptional<double>("thickness")) {
-    if (dict.found("thickness") && dict.found("thicknessFactor"))
-        throw dict.error("thickness",
-                         "give `thickness` [m] or `thicknessFactor` [-] (times h_max), not both");
-    if (!(thicknessFactor_ > 0.0)) throw dict.error("thicknessFactor", "expected a factor > 0");
-    if (thickness_ && !(*thickness_ > 0.0)) throw dict.error("thickness", "expected a thickness > 0 [m]");
+    : MirrorPlane(keywords().read(dict), particles) {}
+
+template <int Dim>
+MirrorPlane<Dim>::MirrorPlane(const KeywordValues& values, const ParticleSet<Dim>& particles)
+    : BoundaryCondition<Dim>(values, particles, true),
+      plane_(values, particles.position()),
+      noSlip_(values.flag("noSlip")),
+      thicknessFactor_(values.scalar("thicknessFactor")),
+      thickness_(values.optionalScalar("thickness")) {
+    if (values.given("thickness") && values.given("thicknessFactor"))
+        throw values.error("thickness",
+                           "give `thickness` [m] or `thicknessFactor` [-] (times h_max), not both");
 }
 
 template <int Dim>

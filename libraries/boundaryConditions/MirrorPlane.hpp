@@ -12,6 +12,7 @@ class MirrorPlane : public BoundaryCondition<Dim> {
 public:
     using typename BoundaryCondition<Dim>::VectorType;
     MirrorPlane(const Dictionary& dict, const ParticleSet<Dim>& particles);
+    static KeywordSchema keywords();
     const Plane<Dim>& plane() const { return plane_; }
     bool noSlip() const { return noSlip_; }
     // The layer mirrored: `thickness`, else thicknessFactor * hMax.
@@ -28,6 +29,8 @@ protected:
                     GhostBlock<Dim>& block) const override;
 
 private:
+    MirrorPlane(const KeywordValues& values, const ParticleSet<Dim>& particles);
+
     Plane<Dim> plane_;
     bool noSlip_;
     double thicknessFactor_;

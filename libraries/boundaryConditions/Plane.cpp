@@ -4,15 +4,26 @@
 
 namespace mfdyn {
 
+KeywordSchema planeKeywords() {
+    return KeywordSchema("boundaryCondition", "plane")
+        .vector("point", "m", "a point of the plane")
+        .vector("normal", "-", "the plane's normal, pointing into the material (normalised when read)")
+        .example("(1 0 0)")
+        .scalar("tolerance", "m",
+                "how far inside a particle still counts as on the plane (default 1e-9 "
+                "times the extent of the particle set)")
+        .atLeast(0)
+        .optional();
+}
+
 template <int Dim>
-Plane<Dim>::Plane(const Dictionary& dict, const std::vector<Vector<Dim>>& positions)
-    : point_(dict.get<Vector<Dim>>("point")), normal_(dict.get<Vector<Dim>>("normal")) {
+Plane<Dim>::Plane(const KeywordValues& values, const std::vector<Vector<Dim>>& positions)
+    : point_(keywordVector<Dim>(values, "point")), normal_(keywordVector<Dim>(values, "normal")) {
     const double length = normal_.norm();
-    if (!(length > 0.0) || !std::isfinite(length))
-        throw dict.error("normal", "the normal must be a non-zero vector (it is normalised)");
+    if (!(length > 0.0))
+        throw values.error("normal", "the normal must be a non-zero vector (it is normalised)");
     normal_ /= length;
-    if (auto tolerance = dict.getOptional<double>("tolerance")) {
-        if (!(*tolerance >= 0.0)) throw dict.error("tolerance", "expected a distance >= 0 [m]");
+    if (auto tolerance = values.optionalScalar("tolerance")) {
         tolerance_ = *tolerance;
     } else if (!positions.empty()) {
         Vector<Dim> lo = positions.front(), hi = positions.front();

@@ -7,17 +7,22 @@
 // `tolerance` [m] is how far inside a particle still counts as on the plane (a lattice that
 // includes the boundary face puts particles at d = 0 up to round-off); by default 1e-9 times the
 // extent of the particle set.
-#include "core/Dictionary.hpp"
+#include "core/KeywordSchema.hpp"
 #include "core/Tensor.hpp"
 
 #include <vector>
 
 namespace mfdyn {
 
+// point, normal and tolerance, appended to the schemas of the plane conditions.
+KeywordSchema planeKeywords();
+
 template <int Dim>
 class Plane {
 public:
-    Plane(const Dictionary& dict, const std::vector<Vector<Dim>>& positions);
+    // From values read through a schema that includes planeKeywords(); `positions` give the
+    // default tolerance.
+    Plane(const KeywordValues& values, const std::vector<Vector<Dim>>& positions);
     Plane(const Vector<Dim>& point, const Vector<Dim>& normal, double tolerance = 0.0);
 
     const Vector<Dim>& point() const { return point_; }

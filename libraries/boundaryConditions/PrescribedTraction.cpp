@@ -25,15 +25,23 @@
 namespace mfdyn {
 
 template <int Dim>
+KeywordSchema PrescribedTraction<Dim>::keywords() {
+    return KeywordSchema("boundaryCondition", "prescribedTraction")
+        .append(vectorTableKeywords("traction", "Pa", "the traction on the loaded face"))
+        .scalar("area", "m^2", "the area of the loaded face, which carries the total force traction × area")
+        .greaterThan(0)
+        .append(commonBoundaryConditionKeywords());
+}
+
+template <int Dim>
 PrescribedTraction<Dim>::PrescribedTraction(const Dictionary& dict, const ParticleSet<Dim>& particles)
-    : BoundaryCondition<Dim>(dict, particles, false), table_(dict, "traction", "Pa") {
-    if (!dict.found("area"))
-        throw InputError(
-            dict.where(), dict.scope(),
-            "missing `area A;`: the area of the loaded face [m^2], which carries the total force "
-            "traction × area");
-    area_ = dict.get<double>("area");
-    if (!(area_ > 0.0) || !std::isfinite(area_)) throw dict.error("area", "expected an area > 0 [m^2]");
+    : PrescribedTraction(keywords().read(dict), particles) {}
+
+template <int Dim>
+PrescribedTraction<Dim>::PrescribedTraction(const KeywordValues& values, const ParticleSet<Dim>& particles)
+    : BoundaryCondition<Dim>(values, particles, false), table_(values, "traction", "Pa") {
+    const Dictionary& dict = values.dict();
+    area_ = values.scalar("area");
 
     const auto* mass = particles.template findField<double>("mass");
     const auto* density = particles.template findField<double>("density");

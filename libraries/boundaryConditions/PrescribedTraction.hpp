@@ -22,6 +22,7 @@ class PrescribedTraction : public BoundaryCondition<Dim> {
 public:
     using typename BoundaryCondition<Dim>::VectorType;
     PrescribedTraction(const Dictionary& dict, const ParticleSet<Dim>& particles);
+    static KeywordSchema keywords();
 
     // t(t) [Pa].
     VectorType traction(double t) const;
@@ -33,6 +34,8 @@ protected:
     void selectionUpdated(const ParticleSet<Dim>& particles) override;
 
 private:
+    PrescribedTraction(const KeywordValues& values, const ParticleSet<Dim>& particles);
+
     VectorTable<Dim> table_;
     double area_ = 0;
     std::vector<std::int64_t> ids_;     // globalId of the loaded particles

@@ -15,8 +15,19 @@
 namespace mfdyn {
 
 template <int Dim>
+KeywordSchema PrescribedVelocity<Dim>::keywords() {
+    return KeywordSchema("boundaryCondition", "prescribedVelocity")
+        .append(vectorTableKeywords("velocity", "m/s", "the velocity of the selected particles"))
+        .append(commonBoundaryConditionKeywords());
+}
+
+template <int Dim>
 PrescribedVelocity<Dim>::PrescribedVelocity(const Dictionary& dict, const ParticleSet<Dim>& particles)
-    : BoundaryCondition<Dim>(dict, particles, false), table_(dict, "velocity", "m/s") {}
+    : PrescribedVelocity(keywords().read(dict), particles) {}
+
+template <int Dim>
+PrescribedVelocity<Dim>::PrescribedVelocity(const KeywordValues& values, const ParticleSet<Dim>& particles)
+    : BoundaryCondition<Dim>(values, particles, false), table_(values, "velocity", "m/s") {}
 
 template <int Dim>
 typename PrescribedVelocity<Dim>::VectorType PrescribedVelocity<Dim>::velocity(double t) const {

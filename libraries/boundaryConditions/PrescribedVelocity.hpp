@@ -16,6 +16,7 @@ class PrescribedVelocity : public BoundaryCondition<Dim> {
 public:
     using typename BoundaryCondition<Dim>::VectorType;
     PrescribedVelocity(const Dictionary& dict, const ParticleSet<Dim>& particles);
+    static KeywordSchema keywords();
 
     // v_prescribed(t) and its time derivative.
     VectorType velocity(double t) const;
@@ -26,6 +27,8 @@ protected:
     void accelerationConstraint(ParticleSet<Dim>&, std::vector<VectorType>& a, double t) override;
 
 private:
+    PrescribedVelocity(const KeywordValues& values, const ParticleSet<Dim>& particles);
+
     VectorTable<Dim> table_;
 };
 

@@ -21,13 +21,27 @@
 namespace mfdyn {
 
 template <int Dim>
-RigidPlanarWall<Dim>::RigidPlanarWall(const Dictionary& dict, const ParticleSet<Dim>& particles)
-    : BoundaryCondition<Dim>(dict, particles, true),
-      plane_(dict, particles.position()),
-      restitution_(dict.getOrDefault<double>("restitution", 0.0)) {
-    if (!(restitution_ >= 0.0 && restitution_ <= 1.0))
-        throw dict.error("restitution", "expected a coefficient of restitution in [0, 1]");
+KeywordSchema RigidPlanarWall<Dim>::keywords() {
+    return KeywordSchema("boundaryCondition", "rigidPlanarWall")
+        .append(planeKeywords())
+        .scalar("restitution", "-",
+                "coefficient of restitution e: 0 stops the approaching normal velocity, "
+                "1 reflects it")
+        .atLeast(0)
+        .atMost(1)
+        .orDefault(0.0)
+        .append(commonBoundaryConditionKeywords());
 }
+
+template <int Dim>
+RigidPlanarWall<Dim>::RigidPlanarWall(const Dictionary& dict, const ParticleSet<Dim>& particles)
+    : RigidPlanarWall(keywords().read(dict), particles) {}
+
+template <int Dim>
+RigidPlanarWall<Dim>::RigidPlanarWall(const KeywordValues& values, const ParticleSet<Dim>& particles)
+    : BoundaryCondition<Dim>(values, particles, true),
+      plane_(values, particles.position()),
+      restitution_(values.scalar("restitution")) {}
 
 template <int Dim>
 void RigidPlanarWall<Dim>::velocityConstraint(ParticleSet<Dim>& particles, std::vector<VectorType>& v,

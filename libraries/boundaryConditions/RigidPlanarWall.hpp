@@ -10,6 +10,7 @@ class RigidPlanarWall : public BoundaryCondition<Dim> {
 public:
     using typename BoundaryCondition<Dim>::VectorType;
     RigidPlanarWall(const Dictionary& dict, const ParticleSet<Dim>& particles);
+    static KeywordSchema keywords();
     const Plane<Dim>& plane() const { return plane_; }
     double restitution() const { return restitution_; }
 
@@ -19,6 +20,8 @@ protected:
     void positionConstraint(ParticleSet<Dim>& particles, double) override;
 
 private:
+    RigidPlanarWall(const KeywordValues& values, const ParticleSet<Dim>& particles);
+
     Plane<Dim> plane_;
     double restitution_;
 };

@@ -5,28 +5,45 @@
 
 namespace mfdyn {
 
+KeywordSchema selectionKeywords() {
+    return KeywordSchema("boundaryCondition", "selection")
+        .words("regions", "the particles of these named regions (with shape: those of them inside it)")
+        .optional()
+        .dictionary("shape", "the particles inside this shape (geometry/Shape.hpp)")
+        .optional()
+        .flag("all", "every particle (instead of regions and shape)")
+        .optional()
+        .flag("reselect",
+              "yes: after a reorder, apply the criteria again to the current positions; not "
+              "given or no: keep the same particles (by global id)")
+        .optional();
+}
+
 template <int Dim>
-Selection<Dim>::Selection(const Dictionary& dict, const ParticleSet<Dim>& particles, bool allByDefault) {
-    const bool hasRegions = dict.found("regions");
-    const bool hasShape = dict.found("shape");
-    const bool allGiven = dict.found("all");
-    all_ = dict.getOrDefault<bool>("all", false);
+Selection<Dim>::Selection(const Dictionary& dict, const ParticleSet<Dim>& particles, bool allByDefault)
+    : Selection(selectionKeywords().read(dict), particles, allByDefault) {}
+
+template <int Dim>
+Selection<Dim>::Selection(const KeywordValues& values, const ParticleSet<Dim>& particles, bool allByDefault) {
+    const bool hasRegions = values.given("regions");
+    const bool hasShape = values.given("shape");
+    const bool allGiven = values.given("all");
+    all_ = allGiven && values.flag("all");
     if (all_ && (hasRegions || hasShape))
-        throw dict.error("all", "`all yes` selects every particle; remove `regions` and `shape` or `all`");
+        throw values.error("all", "`all yes` selects every particle; remove `regions` and `shape` or `all`");
     if (allGiven && !all_ && !hasRegions && !hasShape)
-        throw dict.error("all", "`all no` needs `regions (...)` or `shape { ... }`");
+        throw values.error("all", "`all no` needs `regions (...)` or `shape { ... }`");
     if (!allGiven && !hasRegions && !hasShape) {
         if (!allByDefault)
-            throw InputError(dict.where(), dict.scope(),
+            throw InputError(values.dict().where(), values.dict().scope(),
                              "no particles selected: give `regions (name ...);`, `shape { type ...; }` or "
                              "`all yes;`");
         all_ = true;
     }
-    reselect_ = dict.getOrDefault<bool>("reselect", false);
+    reselect_ = values.flag("reselect");
 
     if (hasRegions) {
-        regionNames_ = dict.get<std::vector<std::string>>("regions");
-        if (regionNames_.empty()) throw dict.error("regions", "the list of regions is empty");
+        regionNames_ = values.words("regions");
         for (const auto& name : regionNames_) {
             const auto& known = particles.regionNames;
             const auto it = std::find(known.begin(), known.end(), name);
@@ -37,13 +54,13 @@ Selection<Dim>::Selection(const Dictionary& dict, const ParticleSet<Dim>& partic
                 const std::string guess = closestMatch(name, known);
                 if (!guess.empty()) message += "; did you mean '" + guess + "'?";
                 message += " Regions in the particle file: " + (list.empty() ? std::string("(none)") : list);
-                throw dict.error("regions", message);
+                throw values.error("regions", message);
             }
             regionIds_.push_back(std::int64_t(it - known.begin()));
         }
     }
     if (hasShape) {
-        const Dictionary& shapeDict = dict.subDict("shape");
+        const Dictionary& shapeDict = values.dictionary("shape");
         shape_ = Shape::New(shapeDict, Dim);
         shapeType_ = shapeDict.get<std::string>("type");
     }

@@ -16,6 +16,7 @@
 //   - with `reselect yes;`, evaluates the criteria again on the current positions, for an
 //     Updated-Lagrangian run whose boundary is a fixed region of space rather than fixed particles.
 #include "core/Dictionary.hpp"
+#include "core/KeywordSchema.hpp"
 #include "geometry/Shape.hpp"
 #include "particles/ParticleSet.hpp"
 
@@ -26,9 +27,16 @@
 
 namespace mfdyn {
 
+// The selection keywords (regions, shape, all, reselect), appended to every boundary condition's
+// schema (BoundaryCondition.hpp).
+KeywordSchema selectionKeywords();
+
 template <int Dim>
 class Selection {
 public:
+    // From values read through a schema that includes selectionKeywords().
+    Selection(const KeywordValues& values, const ParticleSet<Dim>& particles, bool allByDefault);
+    // Reads `dict` through selectionKeywords() alone.
     Selection(const Dictionary& dict, const ParticleSet<Dim>& particles, bool allByDefault);
     Selection(Selection&&) noexcept = default;
     Selection& operator=(Selection&&) noexcept = default;

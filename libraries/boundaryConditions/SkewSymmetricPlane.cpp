@@ -35,8 +35,19 @@ const std::vector<Vector<Dim>>& referenceOrCurrent(const ParticleSet<Dim>& parti
 }  // namespace
 
 template <int Dim>
+KeywordSchema SkewSymmetricPlane<Dim>::keywords() {
+    return KeywordSchema("boundaryCondition", "skewSymmetricPlane")
+        .append(planeKeywords())
+        .append(commonBoundaryConditionKeywords());
+}
+
+template <int Dim>
 SkewSymmetricPlane<Dim>::SkewSymmetricPlane(const Dictionary& dict, const ParticleSet<Dim>& particles)
-    : BoundaryCondition<Dim>(dict, particles, true), plane_(dict, referenceOrCurrent(particles)) {
+    : SkewSymmetricPlane(keywords().read(dict), particles) {}
+
+template <int Dim>
+SkewSymmetricPlane<Dim>::SkewSymmetricPlane(const KeywordValues& values, const ParticleSet<Dim>& particles)
+    : BoundaryCondition<Dim>(values, particles, true), plane_(values, referenceOrCurrent(particles)) {
     const auto& x = referenceOrCurrent(particles);
     const auto& id = particles.globalId();
     for (const std::size_t i : this->selection_.indices())
@@ -45,9 +56,10 @@ SkewSymmetricPlane<Dim>::SkewSymmetricPlane(const Dictionary& dict, const Partic
             ids_.push_back(id[i]);
         }
     if (indices_.empty() && !this->selection_.indices().empty())
-        throw dict.error("point", "no selected particle lies on the plane (|signed distance| <= tolerance " +
-                                      std::to_string(plane_.tolerance()) +
-                                      " m); check `point` and `normal`, or give a larger `tolerance`");
+        throw values.error("point",
+                           "no selected particle lies on the plane (|signed distance| <= tolerance " +
+                               std::to_string(plane_.tolerance()) +
+                               " m); check `point` and `normal`, or give a larger `tolerance`");
 }
 
 template <int Dim>

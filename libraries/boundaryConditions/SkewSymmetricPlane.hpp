@@ -20,6 +20,7 @@ class SkewSymmetricPlane : public BoundaryCondition<Dim> {
 public:
     using typename BoundaryCondition<Dim>::VectorType;
     SkewSymmetricPlane(const Dictionary& dict, const ParticleSet<Dim>& particles);
+    static KeywordSchema keywords();
     const Plane<Dim>& plane() const { return plane_; }
     // Current indices of the particles picked on the plane.
     const std::vector<std::size_t>& onPlane() const { return indices_; }
@@ -31,6 +32,8 @@ protected:
     void selectionUpdated(const ParticleSet<Dim>& particles) override;
 
 private:
+    SkewSymmetricPlane(const KeywordValues& values, const ParticleSet<Dim>& particles);
+
     void keepNormal(std::vector<VectorType>& values) const;
     Plane<Dim> plane_;
     std::vector<std::int64_t> ids_;     // globalId of the particles on the plane

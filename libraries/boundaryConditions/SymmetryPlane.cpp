@@ -17,8 +17,19 @@
 namespace mfdyn {
 
 template <int Dim>
+KeywordSchema SymmetryPlane<Dim>::keywords() {
+    return KeywordSchema("boundaryCondition", "symmetryPlane")
+        .append(planeKeywords())
+        .append(commonBoundaryConditionKeywords());
+}
+
+template <int Dim>
 SymmetryPlane<Dim>::SymmetryPlane(const Dictionary& dict, const ParticleSet<Dim>& particles)
-    : BoundaryCondition<Dim>(dict, particles, true), plane_(dict, particles.position()) {}
+    : SymmetryPlane(keywords().read(dict), particles) {}
+
+template <int Dim>
+SymmetryPlane<Dim>::SymmetryPlane(const KeywordValues& values, const ParticleSet<Dim>& particles)
+    : BoundaryCondition<Dim>(values, particles, true), plane_(values, particles.position()) {}
 
 template <int Dim>
 void SymmetryPlane<Dim>::removeNormal(const ParticleSet<Dim>& particles,

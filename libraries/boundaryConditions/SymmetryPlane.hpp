@@ -10,6 +10,7 @@ class SymmetryPlane : public BoundaryCondition<Dim> {
 public:
     using typename BoundaryCondition<Dim>::VectorType;
     SymmetryPlane(const Dictionary& dict, const ParticleSet<Dim>& particles);
+    static KeywordSchema keywords();
     const Plane<Dim>& plane() const { return plane_; }
 
 protected:
@@ -18,6 +19,8 @@ protected:
     void positionConstraint(ParticleSet<Dim>& particles, double) override;
 
 private:
+    SymmetryPlane(const KeywordValues& values, const ParticleSet<Dim>& particles);
+
     // Removes the normal component of values[i] for the selected particles on or behind the plane.
     void removeNormal(const ParticleSet<Dim>& particles, std::vector<VectorType>& values) const;
     Plane<Dim> plane_;

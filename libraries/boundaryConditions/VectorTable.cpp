@@ -31,16 +31,31 @@ Vector<Dim> vectorOf(const Token& token, const Dictionary& dict) {
 
 }  // namespace
 
+KeywordSchema vectorTableKeywords(const std::string& key, const std::string& unit,
+                                  const std::string& meaning) {
+    return KeywordSchema("boundaryCondition", "vectorTable")
+        .vector(key, unit, meaning + ", constant in time")
+        .optional()
+        .table("table", "s, " + unit,
+               meaning +
+                   " against time: rows (t (x y z)), times increasing, linear between rows and "
+                   "constant beyond them (instead of " +
+                   key + ")")
+        .example("((0 (0 0 0)) (1e-3 (0 -1 0)))")
+        .optional();
+}
+
 template <int Dim>
-VectorTable<Dim>::VectorTable(const Dictionary& dict, const std::string& key, const std::string& unit) {
-    const bool hasConstant = dict.found(key), hasTable = dict.found("table");
+VectorTable<Dim>::VectorTable(const KeywordValues& values, const std::string& key, const std::string& unit) {
+    const Dictionary& dict = values.dict();
+    const bool hasConstant = values.given(key), hasTable = values.given("table");
     if (hasConstant == hasTable)
         throw InputError(
             dict.where(), dict.scope(),
             "give exactly one of `" + key + " (x y z);` [" + unit + "] and `table ((t (x y z)) ...);`");
     if (hasConstant) {
         times_ = {0.0};
-        values_ = {dict.get<Vector<Dim>>(key)};
+        values_ = {keywordVector<Dim>(values, key)};
         return;
     }
     const Entry& entry = dict.entry("table");

@@ -6,7 +6,7 @@
 //     table    ((0 (0 0 0)) (1e-3 (0 -100 0)) (0.01 (0 -100 0)));   // (time (x y z)) rows, times increasing
 //
 // Exactly one of the two must be given. Components beyond the case's dimension must be zero.
-#include "core/Dictionary.hpp"
+#include "core/KeywordSchema.hpp"
 #include "core/Tensor.hpp"
 
 #include <string>
@@ -14,11 +14,15 @@
 
 namespace mfdyn {
 
+// The constant `key` [unit] and `table`, both optional (exactly one is checked when read).
+KeywordSchema vectorTableKeywords(const std::string& key, const std::string& unit,
+                                  const std::string& meaning);
+
 template <int Dim>
 class VectorTable {
 public:
-    // `key`: the constant's keyword (velocity, traction); `unit`: for the messages ("m/s").
-    VectorTable(const Dictionary& dict, const std::string& key, const std::string& unit);
+    // From values read through a schema that includes vectorTableKeywords(key, unit, ...).
+    VectorTable(const KeywordValues& values, const std::string& key, const std::string& unit);
     Vector<Dim> value(double t) const;
     // d value/dt: zero for a constant and outside the table, the slope of the row pair inside.
     Vector<Dim> rate(double t) const;
