@@ -67,6 +67,8 @@ std::string Keyword::typeText() const {
             return "a list of names (...)";
         case Type::table:
             return "a table of rows (...)";
+        case Type::identifier:
+            return "a name";
     }
     return "?";
 }
@@ -111,6 +113,8 @@ std::string Keyword::sampleValue() const {
             return "(name)";
         case Type::table:
             return "((0 (0 0 0)))";
+        case Type::identifier:
+            return "name";
         case Type::integer:
         case Type::scalar:
             break;
@@ -175,6 +179,11 @@ KeywordSchema& KeywordSchema::words(std::string name, std::string meaning) {
     return *this;
 }
 
+KeywordSchema& KeywordSchema::identifier(std::string name, std::string meaning) {
+    keywords_.push_back(makeKeyword(std::move(name), "-", std::move(meaning), Keyword::Type::identifier));
+    return *this;
+}
+
 KeywordSchema& KeywordSchema::table(std::string name, std::string unit, std::string meaning) {
     keywords_.push_back(
         makeKeyword(std::move(name), std::move(unit), std::move(meaning), Keyword::Type::table));
@@ -219,9 +228,9 @@ KeywordSchema& KeywordSchema::orDefault(const char* value) {
 
 KeywordSchema& KeywordSchema::orDefault(const std::string& value) {
     Keyword& k = last("orDefault");
-    if (k.type != Keyword::Type::word)
+    if (k.type != Keyword::Type::word && k.type != Keyword::Type::identifier)
         throw std::logic_error(family_ + " " + type_ + ": word default for keyword " + k.name);
-    bool valid = false;
+    bool valid = k.type == Keyword::Type::identifier;
     for (const auto& w : k.words) valid = valid || w == value;
     if (!valid)
         throw std::logic_error(family_ + " " + type_ + ": default of " + k.name + " is not one of its words");
@@ -245,6 +254,18 @@ KeywordSchema& KeywordSchema::orDefault(const std::vector<double>& value) {
     k.kind = Keyword::Kind::defaulted;
     k.defaultValue = text + ")";
     k.defaultList = value;
+    return *this;
+}
+
+KeywordSchema& KeywordSchema::orDefaultNames(const std::vector<std::string>& value) {
+    Keyword& k = last("orDefaultNames");
+    if (k.type != Keyword::Type::wordList || value.empty())
+        throw std::logic_error(family_ + " " + type_ + ": list-of-names default for keyword " + k.name);
+    std::string text = "(";
+    for (std::size_t i = 0; i < value.size(); ++i) text += (i ? " " : "") + value[i];
+    k.kind = Keyword::Kind::defaulted;
+    k.defaultValue = text + ")";
+    k.defaultNames = value;
     return *this;
 }
 
@@ -375,6 +396,9 @@ KeywordValues KeywordSchema::read(const Dictionary& dict) const {
                     case Keyword::Type::vector:
                         v.list = k.defaultList;
                         break;
+                    case Keyword::Type::wordList:
+                        v.names = k.defaultNames;
+                        break;
                     default:
                         v.text = k.defaultValue;
                         break;
@@ -439,6 +463,9 @@ KeywordValues KeywordSchema::read(const Dictionary& dict) const {
             case Keyword::Type::table:
                 from.entry(k.name);  // its rows are the model's to parse
                 break;
+            case Keyword::Type::identifier:
+                v.text = from.get<std::string>(k.name);
+                break;
         }
         out.values_.push_back(std::move(v));
     }
@@ -459,7 +486,8 @@ const KeywordValues::Value& KeywordValues::value(std::string_view name, Keyword:
         if (v.keyword.name != name) continue;
         const bool numeric = type == Keyword::Type::scalar && (v.keyword.type == Keyword::Type::scalar ||
                                                                v.keyword.type == Keyword::Type::integer);
-        if (v.keyword.type != type && !numeric)
+        const bool freeName = type == Keyword::Type::word && v.keyword.type == Keyword::Type::identifier;
+        if (v.keyword.type != type && !numeric && !freeName)
             throw std::logic_error(model_ + ": keyword '" + std::string(name) + "' is declared " +
                                    v.keyword.typeText() + " but read as another type");
         return v;

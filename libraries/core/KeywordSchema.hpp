@@ -48,19 +48,21 @@ struct Keyword {
     enum class Kind { required, defaulted, optional };
     // wordList: a list of names, `(wall lid)`; table: a list of rows the model parses itself
     // (a time table `((0 (0 0 0)) (1e-3 (0 -1 0)))`), for which the schema checks presence only.
-    enum class Type { scalar, integer, word, vector, switchValue, dictionary, wordList, table };
+    // identifier: one free name (a field's), where `word` is one of a fixed set.
+    enum class Type { scalar, integer, word, vector, switchValue, dictionary, wordList, table, identifier };
 
     std::string name;
     std::string unit;  // SI; "-" for dimensionless
     std::string meaning;
     Kind kind = Kind::required;
     Type type = Type::scalar;
-    std::string defaultValue;         // as written in a dictionary: "7", "cubic", "yes"
-    double defaultNumber = 0.0;       // the default of a scalar or integer, exactly
-    std::vector<double> defaultList;  // the default of a vector
-    std::size_t length = 0;           // the number of components of a vector; 0: any
-    std::vector<std::string> words;   // the valid words of Type::word
-    std::string example;              // a value for documentation excerpts ("(1 0 0)"), when given
+    std::string defaultValue;               // as written in a dictionary: "7", "cubic", "yes"
+    double defaultNumber = 0.0;             // the default of a scalar or integer, exactly
+    std::vector<double> defaultList;        // the default of a vector
+    std::vector<std::string> defaultNames;  // the default of a list of names
+    std::size_t length = 0;                 // the number of components of a vector; 0: any
+    std::vector<std::string> words;         // the valid words of Type::word
+    std::string example;                    // a value for documentation excerpts ("(1 0 0)"), when given
     std::optional<KeywordBound> lower, upper;
     bool orEnclosing = false;
 
@@ -93,7 +95,8 @@ public:
     KeywordSchema& vector(std::string name, std::string unit, std::string meaning);
     KeywordSchema& flag(std::string name, std::string meaning);  // a switch: yes/no, on/off, true/false
     KeywordSchema& dictionary(std::string name, std::string meaning);
-    KeywordSchema& words(std::string name, std::string meaning);  // a non-empty list of names
+    KeywordSchema& words(std::string name, std::string meaning);       // a non-empty list of names
+    KeywordSchema& identifier(std::string name, std::string meaning);  // one name, any
     KeywordSchema& table(std::string name, std::string unit, std::string meaning);
 
     // Modifiers of the keyword declared last.
@@ -102,7 +105,8 @@ public:
     KeywordSchema& orDefault(bool value);
     KeywordSchema& orDefault(const char* value);
     KeywordSchema& orDefault(const std::string& value);
-    KeywordSchema& orDefault(const std::vector<double>& value);  // a vector: written "(1 2)"
+    KeywordSchema& orDefault(const std::vector<double>& value);            // a vector: written "(1 2)"
+    KeywordSchema& orDefaultNames(const std::vector<std::string>& value);  // a list of names
     KeywordSchema& optional();
     KeywordSchema& greaterThan(double bound);
     KeywordSchema& atLeast(double bound);
@@ -146,7 +150,7 @@ public:
     double scalar(std::string_view name) const;
     std::optional<double> optionalScalar(std::string_view name) const;
     long integer(std::string_view name) const;
-    const std::string& word(std::string_view name) const;
+    const std::string& word(std::string_view name) const;  // a word or an identifier
     bool flag(std::string_view name) const;
     const std::vector<double>& vector(std::string_view name) const;
     const Dictionary& dictionary(std::string_view name) const;

@@ -267,3 +267,34 @@ TEST(KeywordSchema, VectorDefaultsAndLength) {
                      .orDefault(std::vector<double>{1.0}),
                  std::logic_error);
 }
+
+TEST(KeywordSchema, NamesListsTablesAndExamples) {
+    const KeywordSchema schema = KeywordSchema("widgetForTest", "probe")
+                                     .identifier("field", "a field of the run")
+                                     .orDefault("density")
+                                     .words("regions", "regions read")
+                                     .orDefaultNames({"a", "b"})
+                                     .words("tags", "tags")
+                                     .optional()
+                                     .table("rows", "s, m", "rows the model parses")
+                                     .example("((0 1))")
+                                     .vector("normal", "-", "a direction")
+                                     .example("(1 0 0)")
+                                     .optional();
+    EXPECT_EQ(schema.find("regions")->defaultValue, "(a b)");
+    EXPECT_EQ(schema.find("rows")->sampleValue(), "((0 1))");
+    EXPECT_EQ(schema.find("normal")->sampleValue(), "(1 0 0)");  // not the zeros of the default rule
+    const Dictionary dict = Dictionary::parse("field velocity; tags (x y); rows ((0 (1 2)) (1 (3 4)));", "d");
+    const KeywordValues v = schema.read(dict);
+    EXPECT_EQ(v.word("field"), "velocity");                               // any name is valid
+    EXPECT_EQ(v.words("regions"), (std::vector<std::string>{"a", "b"}));  // the default
+    EXPECT_EQ(v.words("tags"), (std::vector<std::string>{"x", "y"}));
+    EXPECT_TRUE(v.given("rows"));
+    EXPECT_TRUE(dict.unusedEntries().empty());  // the table is marked read for the model
+    const std::string empty =
+        messageOf([&] { schema.read(Dictionary::parse("tags (); rows ((0 1));", "d")); });
+    EXPECT_TRUE(contains(empty, "keyword 'tags'")) << empty;
+    EXPECT_TRUE(contains(empty, "expected at least one name")) << empty;
+    const std::string missing = messageOf([&] { schema.read(Dictionary::parse("field x;", "d")); });
+    EXPECT_TRUE(contains(missing, "missing keyword 'rows'")) << missing;
+}
