@@ -22,9 +22,17 @@ const BodyForceSolver& bodyForceSolver(const Dictionary& dict, const RunContext&
 }
 }  // namespace
 
+KeywordSchema TrajectoryError::keywords() {
+    return KeywordSchema("functionObject", "trajectoryError").append(functionObjectKeywords());
+}
+
 TrajectoryError::TrajectoryError(const Dictionary& dict, const std::string& name, const RunContext& context)
-    : FunctionObject(dict, name, context),
-      solver_(bodyForceSolver(dict, context)),
+    : TrajectoryError(keywords().read(dict), name, context) {}
+
+TrajectoryError::TrajectoryError(const KeywordValues& values, const std::string& name,
+                                 const RunContext& context)
+    : FunctionObject(values, name, context),
+      solver_(bodyForceSolver(values.dict(), context)),
       t0_(context.time().value()),
       norms_(outputFile("errorNorms.csv"), name) {
     const FieldStore& fields = context.fields();
@@ -38,7 +46,7 @@ TrajectoryError::TrajectoryError(const Dictionary& dict, const std::string& name
             x0_[i * dim + d] = x.component(i, d), v0_[i * dim + d] = v.component(i, d);
     double probe[3], probeV[3];
     if (fields.size() && !solver_.bodyForce().exactTrajectory(x0_.data(), v0_.data(), 0.0, probe, probeV))
-        throw dict.error("type", "the selected bodyForce has no exact trajectory to compare with");
+        throw values.dict().error("type", "the selected bodyForce has no exact trajectory to compare with");
 }
 
 void TrajectoryError::write() {

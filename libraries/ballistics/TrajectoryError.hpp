@@ -8,10 +8,12 @@ class BodyForceSolver;
 class TrajectoryError final : public FunctionObject {
 public:
     TrajectoryError(const Dictionary& dict, const std::string& name, const RunContext& context);
+    static KeywordSchema keywords();
     void write() override;
     std::vector<ErrorNorm> errorNorms() const override { return norms_.latest(); }
 
 private:
+    TrajectoryError(const KeywordValues& values, const std::string& name, const RunContext& context);
     const BodyForceSolver& solver_;
     double t0_;
     std::vector<double> x0_, v0_;

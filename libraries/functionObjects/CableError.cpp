@@ -21,15 +21,7 @@
 //         tip (10 0.2 0.2);
 //         writeControl timeStep;  writeInterval 1;
 //     }
-//
-//     keyword        meaning                                           required  default
-//     rho0           reference density [kg/m^3]                        yes
-//     youngsModulus  E [Pa]                                            yes
-//     length         L [m]                                             yes
-//     loadedLength   a [m], 0 <= a <= L                                yes
-//     velocity       v0 [m/s]                                          yes
-//     tip            point [m]; components beyond the case's dimension are ignored   no   (L 0 0)
-//     positionField  reference positions                               no        referencePosition
+// Keywords: doc/models/functionObject/cableError.md (the schema below).
 #include "functionObjects/CableError.hpp"
 
 #include <cmath>
@@ -40,14 +32,11 @@ namespace mfdyn {
 
 namespace {
 
-CableWave cableFrom(const Dictionary& dict) {
-    const double rho0 = dict.get<double>("rho0"), E = dict.get<double>("youngsModulus");
-    if (!(rho0 > 0)) throw dict.error("rho0", "expected a positive density [kg/m^3]");
-    if (!(E > 0)) throw dict.error("youngsModulus", "expected a positive modulus [Pa]");
-    const double L = dict.get<double>("length"), a = dict.get<double>("loadedLength");
-    if (!(L > 0)) throw dict.error("length", "expected a positive length [m]");
-    if (!(a >= 0 && a <= L)) throw dict.error("loadedLength", "expected 0 <= loadedLength <= length");
-    return CableWave(L, std::sqrt(E / rho0), dict.get<double>("velocity"), a);
+CableWave cableFrom(const KeywordValues& values) {
+    const double rho0 = values.scalar("rho0"), E = values.scalar("youngsModulus");
+    const double L = values.scalar("length"), a = values.scalar("loadedLength");
+    if (!(a <= L)) throw values.error("loadedLength", "expected 0 <= loadedLength <= length");
+    return CableWave(L, std::sqrt(E / rho0), values.scalar("velocity"), a);
 }
 
 }  // namespace
@@ -57,20 +46,45 @@ void CableError::History::add(double e) {
     max = std::max(max, std::abs(e));
 }
 
+KeywordSchema CableError::keywords() {
+    return KeywordSchema("functionObject", "cableError")
+        .scalar("rho0", "kg/m^3", "reference density of the cable")
+        .greaterThan(0)
+        .scalar("youngsModulus", "Pa", "Young's modulus E of the cable (wave speed sqrt(E/rho0))")
+        .greaterThan(0)
+        .scalar("length", "m", "cable length L")
+        .greaterThan(0)
+        .scalar("loadedLength", "m", "length of the end section given the initial velocity")
+        .atLeast(0)
+        .scalar("velocity", "m/s", "initial velocity of the loaded section")
+        .vector("tip", "m",
+                "the point whose nearest particle is the tip; components beyond the case's dimension are "
+                "ignored (default (length 0 0))")
+        .optional()
+        .identifier("positionField", "vector field of the particles' coordinates used to find the tip")
+        .orDefault("referencePosition")
+        .append(functionObjectKeywords());
+}
+
 CableError::CableError(const Dictionary& dict, const std::string& name, const RunContext& context)
-    : FunctionObject(dict, name, context),
-      exact_(cableFrom(dict)),
-      positionField_(dict.getOrDefault<std::string>("positionField", "referencePosition")),
+    : CableError(keywords().read(dict), name, context) {}
+
+CableError::CableError(const KeywordValues& values, const std::string& name, const RunContext& context)
+    : FunctionObject(values, name, context),
+      exact_(cableFrom(values)),
+      positionField_(values.word("positionField")),
       norms_(outputFile("errorNorms.csv"), name) {
+    const Dictionary& dict = values.dict();
     const FieldStore& fields = context.fields();
     const int dim = context.dimension();
     const FieldBase& X = requireField(dict, "positionField", positionField_);
     requireField(dict, "type", "position");
     requireField(dict, "type", "velocity");
     requireField(dict, "type", "globalId");
-    std::vector<double> tip = dict.getOrDefault<std::vector<double>>("tip", {exact_.length(), 0.0, 0.0});
+    std::vector<double> tip =
+        values.given("tip") ? values.vector("tip") : std::vector<double>{exact_.length(), 0.0, 0.0};
     if (tip.size() < std::size_t(dim))
-        throw dict.error("tip", "expected a point with at least " + std::to_string(dim) + " components");
+        throw values.error("tip", "expected a point with at least " + std::to_string(dim) + " components");
     if (fields.size() == 0) throw dict.error("type", "cableError: there are no particles");
     double best = std::numeric_limits<double>::infinity();
     for (std::size_t i = 0; i < fields.size(); ++i) {

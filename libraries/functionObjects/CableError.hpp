@@ -14,6 +14,7 @@ namespace mfdyn {
 class CableError final : public FunctionObject {
 public:
     CableError(const Dictionary& dict, const std::string& name, const RunContext& context);
+    static KeywordSchema keywords();
     void write() override;
     std::vector<ErrorNorm> errorNorms() const override { return norms_.latest(); }
     std::vector<std::string> summary() const override;
@@ -23,6 +24,7 @@ public:
     double tipReferenceX() const { return tipX_; }
 
 private:
+    CableError(const KeywordValues& values, const std::string& name, const RunContext& context);
     struct History {
         double sumAbs = 0, sumSquares = 0, max = 0;
         void add(double e);

@@ -18,9 +18,17 @@
 
 namespace mfdyn {
 
+KeywordSchema ConservedQuantities::keywords() {
+    return KeywordSchema("functionObject", "conservedQuantities").append(functionObjectKeywords());
+}
+
 ConservedQuantities::ConservedQuantities(const Dictionary& dict, const std::string& name,
                                          const RunContext& context)
-    : FunctionObject(dict, name, context) {
+    : ConservedQuantities(keywords().read(dict), name, context) {}
+
+ConservedQuantities::ConservedQuantities(const KeywordValues& values, const std::string& name,
+                                         const RunContext& context)
+    : FunctionObject(values, name, context) {
     const int dim = context.dimension();
     const char* axes[] = {"x", "y", "z"};
     columns_ = {"time", "mass"};

@@ -6,10 +6,12 @@ namespace mfdyn {
 class ConservedQuantities final : public FunctionObject {
 public:
     ConservedQuantities(const Dictionary& dict, const std::string& name, const RunContext& context);
+    static KeywordSchema keywords();
     void write() override;
     std::vector<std::string> summary() const override;
 
 private:
+    ConservedQuantities(const KeywordValues& values, const std::string& name, const RunContext& context);
     std::vector<double> measure() const;
 
     std::vector<std::string> columns_;

@@ -37,12 +37,30 @@ double quantile(std::vector<double> v, double q) {
 
 }  // namespace
 
+KeywordSchema DebrisCloud::keywords() {
+    return KeywordSchema("functionObject", "debrisCloud")
+        .vector("direction", "-", "the projectile's direction of flight (normalised when read)")
+        .example("(1 0 0)")
+        .scalar("front", "m", "position of the target's front face along direction")
+        .scalar("rear", "m", "position of the target's rear face along direction (debris: beyond it)")
+        .scalar("trim", "-", "fraction of the debris particles left out at each end of the extents")
+        .atLeast(0)
+        .lessThan(0.5)
+        .orDefault(0.005)
+        .words("targetRegions", "the regions of the target plate (for the hole)")
+        .append(functionObjectKeywords());
+}
+
 DebrisCloud::DebrisCloud(const Dictionary& dict, const std::string& name, const RunContext& context)
-    : FunctionObject(dict, name, context),
-      direction_(dict.get<std::vector<double>>("direction")),
-      rear_(dict.get<double>("rear")),
-      front_(dict.get<double>("front")),
-      trim_(dict.getOrDefault<double>("trim", 0.005)) {
+    : DebrisCloud(keywords().read(dict), name, context) {}
+
+DebrisCloud::DebrisCloud(const KeywordValues& values, const std::string& name, const RunContext& context)
+    : FunctionObject(values, name, context),
+      direction_(values.vector("direction")),
+      rear_(values.scalar("rear")),
+      front_(values.scalar("front")),
+      trim_(values.scalar("trim")) {
+    const Dictionary& dict = values.dict();
     const int dim = context.dimension();
     if (dim < 2) throw dict.error("type", "debrisCloud measures 2D and 3D runs");
     if (int(direction_.size()) < dim)
@@ -53,10 +71,9 @@ DebrisCloud::DebrisCloud(const Dictionary& dict, const std::string& name, const 
     if (!(norm > 0)) throw dict.error("direction", "direction must not be zero");
     for (double& c : direction_) c /= std::sqrt(norm);
     if (!(rear_ > front_)) throw dict.error("rear", "rear must lie beyond front along the direction");
-    if (trim_ < 0 || trim_ >= 0.5) throw dict.error("trim", "trim is a fraction in [0, 0.5)");
 
     const auto& regionNames = dynamic_cast<const ParticleSetBase&>(context.fields()).regionNames;
-    for (const auto& region : dict.get<std::vector<std::string>>("targetRegions")) {
+    for (const auto& region : values.words("targetRegions")) {
         auto it = std::find(regionNames.begin(), regionNames.end(), region);
         if (it == regionNames.end()) {
             std::string valid;

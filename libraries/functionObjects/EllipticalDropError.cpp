@@ -48,20 +48,34 @@
 
 namespace mfdyn {
 
+KeywordSchema EllipticalDropError::keywords() {
+    return KeywordSchema("functionObject", "ellipticalDropError")
+        .scalar("A0", "1/s", "initial strain rate of the velocity field (-A0 x, A0 y)")
+        .greaterThan(0)
+        .orDefault(100.0)
+        .scalar("radius", "m", "initial drop radius (default: from the particles' mass and density)")
+        .greaterThan(0)
+        .optional()
+        .append(functionObjectKeywords());
+}
+
 EllipticalDropError::EllipticalDropError(const Dictionary& dict, const std::string& name,
                                          const RunContext& context)
-    : FunctionObject(dict, name, context),
-      exact_(dict.getOrDefault<double>("A0", 100.0)),
-      radius_(dict.found("radius") ? dict.get<double>("radius") : 0.0),
+    : EllipticalDropError(keywords().read(dict), name, context) {}
+
+EllipticalDropError::EllipticalDropError(const KeywordValues& values, const std::string& name,
+                                         const RunContext& context)
+    : FunctionObject(values, name, context),
+      exact_(values.scalar("A0")),
+      radius_(values.optionalScalar("radius").value_or(0.0)),
       norms_(outputFile("errorNorms.csv"), name) {
+    const Dictionary& dict = values.dict();
     if (context.dimension() != 2)
         throw dict.error("type", "ellipticalDropError measures a 2D drop; this case is " +
                                      std::to_string(context.dimension()) + "D");
-    if (dict.found("radius") && !(radius_ > 0)) throw dict.error("radius", "expected a positive radius [m]");
-    if (!dict.found("radius") && !context.fields().findField("density"))
-        throw dict.error("radius",
-                         "this run has no density field to find the drop's radius from: give `radius`");
-    if (!(exact_.initialStrainRate() > 0)) throw dict.error("A0", "expected a positive strain rate [1/s]");
+    if (!values.given("radius") && !context.fields().findField("density"))
+        throw values.error("radius",
+                           "this run has no density field to find the drop's radius from: give `radius`");
     for (const char* f : {"mass", "velocity"})
         if (!context.fields().findField(f))
             throw dict.error("type", std::string("this run has no field '") + f + "'");

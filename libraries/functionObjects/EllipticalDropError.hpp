@@ -12,11 +12,13 @@ namespace mfdyn {
 class EllipticalDropError final : public FunctionObject {
 public:
     EllipticalDropError(const Dictionary& dict, const std::string& name, const RunContext& context);
+    static KeywordSchema keywords();
     void write() override;
     std::vector<ErrorNorm> errorNorms() const override { return norms_.latest(); }
     std::vector<std::string> summary() const override { return summary_; }
 
 private:
+    EllipticalDropError(const KeywordValues& values, const std::string& name, const RunContext& context);
     EllipticalDrop exact_;
     double radius_;
     ErrorNormWriter norms_;

@@ -14,13 +14,22 @@
 
 namespace mfdyn {
 
+KeywordSchema FieldMinMax::keywords() {
+    return KeywordSchema("functionObject", "fieldMinMax")
+        .words("fields", "the fields to watch")
+        .word("mode", {"magnitude", "component"}, "min and max of the magnitude, or of each component")
+        .orDefault("magnitude")
+        .append(functionObjectKeywords());
+}
+
 FieldMinMax::FieldMinMax(const Dictionary& dict, const std::string& name, const RunContext& context)
-    : FunctionObject(dict, name, context) {
-    fields_ = dict.get<std::vector<std::string>>("fields");
-    const std::string mode = dict.getOrDefault<std::string>("mode", "magnitude");
-    if (mode != "magnitude" && mode != "component")
-        throw dict.error("mode", "'" + mode + "' is not a valid mode; valid choices: magnitude | component");
-    components_ = mode == "component";
+    : FieldMinMax(keywords().read(dict), name, context) {}
+
+FieldMinMax::FieldMinMax(const KeywordValues& values, const std::string& name, const RunContext& context)
+    : FunctionObject(values, name, context) {
+    const Dictionary& dict = values.dict();
+    fields_ = values.words("fields");
+    components_ = values.word("mode") == "component";
     std::vector<std::string> columns{"time"};
     for (const auto& field : fields_) {
         const FieldBase* f = &requireField(dict, "fields", field);

@@ -1,32 +1,48 @@
 #include "functionObjects/FunctionObject.hpp"
 
 #include <cmath>
+#include <optional>
 
 namespace mfdyn {
 
+KeywordSchema functionObjectKeywords() {
+    return KeywordSchema("functionObject", "common")
+        .word("writeControl", {"timeStep", "runTime", "adjustableRunTime", "writeTime"},
+              "when to write: every writeInterval steps, every writeInterval of time, or with the solver")
+        .orDefault("timeStep")
+        .scalar("writeInterval", "steps or s",
+                "steps (timeStep: a whole number, default 1) or time (runTime, adjustableRunTime: required)")
+        .greaterThan(0)
+        .optional();
+}
+
 FunctionObject::FunctionObject(const Dictionary& dict, const std::string& name, const RunContext& context)
+    : FunctionObject(functionObjectKeywords().read(dict), name, context) {}
+
+FunctionObject::FunctionObject(const KeywordValues& values, const std::string& name,
+                               const RunContext& context)
     : name_(name), context_(context) {
-    const std::string control = dict.getOrDefault<std::string>("writeControl", "timeStep");
+    const std::string& control = values.word("writeControl");
+    const std::optional<double> interval = values.optionalScalar("writeInterval");
     if (control == "timeStep") {
         control_ = Control::timeStep;
-        interval_ = dict.getOrDefault<double>("writeInterval", 1.0);
+        interval_ = interval.value_or(1.0);
         if (interval_ < 1 || interval_ != std::floor(interval_))
-            throw dict.error("writeInterval",
-                             "with writeControl timeStep, writeInterval is a whole number of steps >= 1");
-    } else if (control == "runTime" || control == "adjustableRunTime") {
-        control_ = Control::runTime;
-        interval_ = dict.get<double>("writeInterval");
-        if (!(interval_ > 0)) throw dict.error("writeInterval", "writeInterval must be positive");
+            throw values.error("writeInterval",
+                               "with writeControl timeStep, writeInterval is a whole number of steps >= 1");
     } else if (control == "writeTime") {
         control_ = Control::writeTime;
         interval_ = 1;
-    } else {
-        std::string message = "'" + control +
-                              "' is not a valid writeControl; valid choices: timeStep | runTime | "
-                              "adjustableRunTime | writeTime";
-        throw dict.error("writeControl", message);
+    } else {  // runTime, adjustableRunTime
+        control_ = Control::runTime;
+        if (!interval)
+            throw InputError(values.dict().where(), values.dict().scope(),
+                             "missing keyword 'writeInterval' (the time between writes, in s), required "
+                             "with writeControl " +
+                                 control);
+        interval_ = *interval;
     }
-    dict.getOrDefault<std::string>("type", "");  // read by the selector
+    values.dict().findEntry("type");  // read by the selector
 }
 
 FunctionObject::~FunctionObject() = default;

@@ -20,6 +20,9 @@
 
 namespace mfdyn {
 
+// writeControl and writeInterval, appended to every function object's schema.
+KeywordSchema functionObjectKeywords();
+
 struct ErrorNorm {
     std::string source;  // function object name
     std::string field;
@@ -35,6 +38,9 @@ public:
         return Selector::New(dict, name, context);
     }
 
+    // From the values of the type's schema, which appends functionObjectKeywords().
+    FunctionObject(const KeywordValues& values, const std::string& name, const RunContext& context);
+    // For a type without a schema of its own (a user's library): reads functionObjectKeywords().
     FunctionObject(const Dictionary& dict, const std::string& name, const RunContext& context);
     virtual ~FunctionObject();
 

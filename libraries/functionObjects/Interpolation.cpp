@@ -57,38 +57,49 @@ std::string Interpolation::methodName(Method method) {
     return method == Method::mls ? "mls" : "shepard";
 }
 
+KeywordSchema Interpolation::keywords(const std::string& defaultPositionField, Method defaultMethod) {
+    return KeywordSchema("functionObject", "interpolation")
+        .word("interpolation", {"shepard", "mls"},
+              "shepard (kernel-weighted average) or mls (first-order moving least squares)")
+        .orDefault(methodName(defaultMethod))
+        .dictionary("kernel", "the interpolation kernel (default { type wendlandC2; })")
+        .optional()
+        .scalar("h", "m", "smoothing length (default: the particles' smoothingLength field)")
+        .greaterThan(0)
+        .optional()
+        .identifier(
+            "positionField",
+            "vector field of the particles' coordinates (referencePosition: total-Lagrangian reference)")
+        .orDefault(defaultPositionField);
+}
+
 Interpolation::Interpolation(const Dictionary& dict, const FieldStore& particles,
                              const std::string& defaultPositionField, Method defaultMethod)
+    : Interpolation(keywords(defaultPositionField, defaultMethod).read(dict), particles) {}
+
+Interpolation::Interpolation(const KeywordValues& values, const FieldStore& particles)
     : particles_(particles), dim_(particles.dimension()) {
-    positionField_ = dict.getOrDefault<std::string>("positionField", defaultPositionField);
+    positionField_ = values.word("positionField");
     const FieldBase* position = particles.findField(positionField_);
     if (!position || position->components() != dim_) {
         std::string message = "no " + std::to_string(dim_) + "-component vector field '" + positionField_ +
                               "' in these particles; fields:";
         for (const auto& name : particles.fieldNames()) message += " " + name;
-        throw dict.error("positionField", message);
+        throw values.error("positionField", message);
     }
-    const std::string method = dict.getOrDefault<std::string>("interpolation", methodName(defaultMethod));
-    if (method == "shepard")
-        method_ = Method::shepard;
-    else if (method == "mls")
-        method_ = Method::mls;
-    else
-        throw dict.error("interpolation",
-                         "'" + method + "' is not an interpolation; valid choices: shepard | mls");
+    method_ = values.word("interpolation") == "mls" ? Method::mls : Method::shepard;
 
-    if (const Dictionary* k = dict.findDict("kernel")) {
-        kernel_ = Kernel::New(*k);
+    if (values.given("kernel")) {
+        kernel_ = Kernel::New(values.dictionary("kernel"));
     } else {
         Dictionary fallback("kernel");
         fallback.set("type", "wendlandC2");
         kernel_ = Kernel::New(fallback);
     }
 
-    hKeyword_ = dict.getOptional<double>("h");
-    if (hKeyword_ && !(*hKeyword_ > 0.0)) throw dict.error("h", "the smoothing length must be positive");
+    hKeyword_ = values.optionalScalar("h");
     if (!hKeyword_ && !particles.findField("smoothingLength"))
-        throw dict.error("h", "give the smoothing length `h`: the particles have no smoothingLength field");
+        throw values.error("h", "give the smoothing length `h`: the particles have no smoothingLength field");
     update();
 }
 

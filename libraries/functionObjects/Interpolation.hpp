@@ -7,12 +7,8 @@
 //     h 0.02;                           // smoothing length; else the particles' smoothingLength field
 //     positionField referencePosition;  // interpolate in the reference configuration
 //
-//     keyword        meaning                                                   required  default
-//     interpolation  shepard (kernel-weighted average) | mls (first-order MLS)  no        shepard
-//     kernel         kernel sub-dictionary (Kernel.hpp)                        no        wendlandC2
-//     h              smoothing length [m]; overrides a smoothingLength field    no        field
-//     positionField  vector field giving the particles' coordinates            no        position
-//                    (referencePosition: total-Lagrangian reference config.)
+// These keywords are declared once, in Interpolation::keywords() (doc/models/functionObject/probes.md
+// shows them).
 //
 // Both methods are linear in the particle values, f(x) = sum_j phi_j(x) f_j, so the weights
 // phi_j of a point are found once (one neighbour search, one small solve) and applied to every
@@ -38,6 +34,9 @@ using SamplePoint = std::array<double, 3>;
 class Interpolation {
 public:
     enum class Method { shepard, mls };
+    // interpolation, kernel, h and positionField, with the defaults of the caller.
+    static KeywordSchema keywords(const std::string& defaultPositionField = "position",
+                                  Method defaultMethod = Method::shepard);
     // What became of one point.
     enum class Status {
         ok,
@@ -56,6 +55,8 @@ public:
     // Reads the keywords above from `dict`; `particles` must outlive this object. Positions,
     // smoothing lengths and volumes are taken now and at each update(). `defaultPositionField`
     // and `defaultMethod` are what positionField and interpolation default to.
+    // From values read through a schema that includes interpolationKeywords(...).
+    Interpolation(const KeywordValues& values, const FieldStore& particles);
     Interpolation(const Dictionary& dict, const FieldStore& particles,
                   const std::string& defaultPositionField = "position",
                   Method defaultMethod = Method::shepard);

@@ -45,27 +45,43 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
+KeywordSchema IsothermalShockBarError::keywords() {
+    return KeywordSchema("functionObject", "isothermalShockBarError")
+        .scalar("frontWindow", "m", "half-width of the window around each exact front searched for the front")
+        .greaterThan(0)
+        .orDefault(0.03)
+        .words("fields", "the fields compared: density, velocity, pressure")
+        .orDefaultNames({"density", "velocity", "pressure"})
+        .vector("interval", "m", "(from to): the part of the bar the norms are taken over")
+        .ofLength(2)
+        .orDefault(std::vector<double>{0.0, 1.4})
+        .append(functionObjectKeywords());
+}
+
 IsothermalShockBarError::IsothermalShockBarError(const Dictionary& dict, const std::string& name,
                                                  const RunContext& context)
-    : FunctionObject(dict, name, context),
+    : IsothermalShockBarError(keywords().read(dict), name, context) {}
+
+IsothermalShockBarError::IsothermalShockBarError(const KeywordValues& values, const std::string& name,
+                                                 const RunContext& context)
+    : FunctionObject(values, name, context),
       exact_(std::make_unique<IsothermalShockBar>(IsothermalShockBar::zisis2017())),
       t0_(context.time().value()),
-      frontWindow_(dict.getOrDefault<double>("frontWindow", 0.03)),
-      fields_(dict.getOrDefault<std::vector<std::string>>("fields", {"density", "velocity", "pressure"})),
+      frontWindow_(values.scalar("frontWindow")),
+      fields_(values.words("fields")),
       norms_(outputFile("errorNorms.csv"), name) {
+    const Dictionary& dict = values.dict();
     if (context.dimension() != 1)
         throw dict.error("type", "isothermalShockBarError compares 1D runs; this case is " +
                                      std::to_string(context.dimension()) + "D");
-    const auto interval = dict.getOrDefault<std::vector<double>>("interval", {0.0, 1.4});
-    if (interval.size() != 2 || !(interval[1] > interval[0]))
-        throw dict.error("interval", "expected (from to) with from < to");
+    const auto& interval = values.vector("interval");
+    if (!(interval[1] > interval[0])) throw values.error("interval", "expected (from to) with from < to");
     from_ = interval[0], to_ = interval[1];
-    if (!(frontWindow_ > 0)) throw dict.error("frontWindow", "expected a positive length");
     for (const auto& f : fields_) {
         if (f != "density" && f != "velocity" && f != "pressure")
-            throw dict.error("fields",
-                             "'" + f + "' has no exact counterpart; valid: density velocity pressure");
-        if (!context.fields().findField(f)) throw dict.error("fields", "this run has no field '" + f + "'");
+            throw values.error("fields",
+                               "'" + f + "' has no exact counterpart; valid: density velocity pressure");
+        if (!context.fields().findField(f)) throw values.error("fields", "this run has no field '" + f + "'");
     }
     if (!context.fields().findField("smoothingLength"))
         throw dict.error("type", "isothermalShockBarError needs the field smoothingLength (an SPH run)");

@@ -9,11 +9,13 @@ namespace mfdyn {
 class IsothermalShockBarError final : public FunctionObject {
 public:
     IsothermalShockBarError(const Dictionary& dict, const std::string& name, const RunContext& context);
+    static KeywordSchema keywords();
     void write() override;
     std::vector<ErrorNorm> errorNorms() const override { return norms_.latest(); }
     std::vector<std::string> summary() const override { return summary_; }
 
 private:
+    IsothermalShockBarError(const KeywordValues& values, const std::string& name, const RunContext& context);
     std::unique_ptr<IsothermalShockBar> exact_;
     double t0_;
     double from_, to_;

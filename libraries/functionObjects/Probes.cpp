@@ -22,11 +22,24 @@
 
 namespace mfdyn {
 
+KeywordSchema Probes::keywords() {
+    return KeywordSchema("functionObject", "probes")
+        .words("fields", "the fields to interpolate")
+        .table("points", "m", "the probe locations, ((x y z) ...)")
+        .example("((0 0 0) (0.1 0 0))")
+        .append(Interpolation::keywords())
+        .append(functionObjectKeywords());
+}
+
 Probes::Probes(const Dictionary& dict, const std::string& name, const RunContext& context)
-    : FunctionObject(dict, name, context),
-      fields_(dict.get<std::vector<std::string>>("fields")),
-      points_(SamplingSet::readPoints(dict, "points")),
-      interpolation_(dict, context.fields()) {
+    : Probes(keywords().read(dict), name, context) {}
+
+Probes::Probes(const KeywordValues& values, const std::string& name, const RunContext& context)
+    : FunctionObject(values, name, context),
+      fields_(values.words("fields")),
+      points_(SamplingSet::readPoints(values.dict(), "points")),
+      interpolation_(values, context.fields()) {
+    const Dictionary& dict = values.dict();
     std::vector<std::string> columns{"time"};
     std::vector<std::string> parts;
     for (const auto& field : fields_) {

@@ -7,9 +7,11 @@ namespace mfdyn {
 class Probes final : public FunctionObject {
 public:
     Probes(const Dictionary& dict, const std::string& name, const RunContext& context);
+    static KeywordSchema keywords();
     void write() override;
 
 private:
+    Probes(const KeywordValues& values, const std::string& name, const RunContext& context);
     std::vector<std::string> fields_;
     std::vector<SamplePoint> points_;
     Interpolation interpolation_;

@@ -29,21 +29,37 @@ namespace mfdyn {
 
 namespace {
 
+// The equation of state of one side, read with the keywords of its type: the exact solver's three
+// laws, a subset of the equationOfState family.
 RiemannEquationOfState readEos(const Dictionary& dict) {
-    const std::string type = dict.get<std::string>("type");
-    if (type == "idealGas") return RiemannEquationOfState::idealGas(dict.get<double>("gamma"));
-    if (type == "stiffenedGas")
-        return RiemannEquationOfState::stiffenedGas(dict.get<double>("gamma"), dict.get<double>("pRef"));
-    if (type == "linearBarotropic")
-        return RiemannEquationOfState::linearBarotropic(dict.get<double>("rho0"), dict.get<double>("c0"));
-    throw dict.error("type",
-                     "riemannError has an exact solver for idealGas, stiffenedGas and linearBarotropic, "
-                     "not '" +
-                         type + "'");
+    const KeywordValues type = KeywordSchema("functionObject", "riemannError equationOfState")
+                                   .word("type", {"idealGas", "stiffenedGas", "linearBarotropic"},
+                                         "the laws the exact Riemann solver handles")
+                                   .read(dict);
+    const std::string& law = type.word("type");
+    KeywordSchema schema("functionObject", "riemannError " + law);
+    if (law == "linearBarotropic") {
+        schema.scalar("rho0", "kg/m^3", "reference density").greaterThan(0);
+        schema.scalar("c0", "m/s", "sound speed").greaterThan(0);
+        const KeywordValues v = schema.read(dict);
+        return RiemannEquationOfState::linearBarotropic(v.scalar("rho0"), v.scalar("c0"));
+    }
+    schema.scalar("gamma", "-", "ratio of specific heats").greaterThan(1);
+    if (law == "stiffenedGas") schema.scalar("pRef", "Pa", "stiffening pressure").atLeast(0);
+    const KeywordValues v = schema.read(dict);
+    if (law == "idealGas") return RiemannEquationOfState::idealGas(v.scalar("gamma"));
+    return RiemannEquationOfState::stiffenedGas(v.scalar("gamma"), v.scalar("pRef"));
 }
 
 PrimitiveState readState(const Dictionary& dict) {
-    return {dict.get<double>("density"), dict.get<double>("velocity"), dict.get<double>("pressure")};
+    const KeywordValues v = KeywordSchema("functionObject", "riemannError state")
+                                .scalar("density", "kg/m^3", "initial density of the side")
+                                .greaterThan(0)
+                                .scalar("velocity", "m/s", "initial velocity of the side")
+                                .scalar("pressure", "Pa", "initial pressure of the side")
+                                .dictionary("equationOfState", "the side's equation of state")
+                                .read(dict);
+    return {v.scalar("density"), v.scalar("velocity"), v.scalar("pressure")};
 }
 
 double median(std::vector<double> v) {
@@ -54,28 +70,45 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
+KeywordSchema RiemannError::keywords() {
+    return KeywordSchema("functionObject", "riemannError")
+        .scalar("x0", "m", "initial position of the discontinuity")
+        .dictionary("left",
+                    "the state left of x0: density, velocity, pressure, equationOfState { type ...; }")
+        .dictionary("right", "the state right of x0, as left")
+        .vector("interval", "m", "(from to): the part of the tube the norms are taken over")
+        .ofLength(2)
+        .example("(0 1)")
+        .words("fields", "the fields compared: density, velocity, pressure, specificInternalEnergy")
+        .orDefaultNames({"density", "velocity", "pressure"})
+        .append(functionObjectKeywords());
+}
+
 RiemannError::RiemannError(const Dictionary& dict, const std::string& name, const RunContext& context)
-    : FunctionObject(dict, name, context),
+    : RiemannError(keywords().read(dict), name, context) {}
+
+RiemannError::RiemannError(const KeywordValues& values, const std::string& name, const RunContext& context)
+    : FunctionObject(values, name, context),
       t0_(context.time().value()),
-      fields_(dict.getOrDefault<std::vector<std::string>>("fields", {"density", "velocity", "pressure"})),
+      fields_(values.words("fields")),
       norms_(outputFile("errorNorms.csv"), name) {
+    const Dictionary& dict = values.dict();
     if (context.dimension() != 1)
         throw dict.error("type", "riemannError compares 1D runs; this case is " +
                                      std::to_string(context.dimension()) + "D");
-    const Dictionary& left = dict.subDict("left");
-    const Dictionary& right = dict.subDict("right");
-    exact_ = std::make_unique<ShockTubeSolution>(dict.get<double>("x0"), readState(left),
+    const Dictionary& left = values.dictionary("left");
+    const Dictionary& right = values.dictionary("right");
+    exact_ = std::make_unique<ShockTubeSolution>(values.scalar("x0"), readState(left),
                                                  readEos(left.subDict("equationOfState")), readState(right),
                                                  readEos(right.subDict("equationOfState")));
-    const auto interval = dict.get<std::vector<double>>("interval");
-    if (interval.size() != 2 || !(interval[1] > interval[0]))
-        throw dict.error("interval", "expected (from to) with from < to");
+    const auto& interval = values.vector("interval");
+    if (!(interval[1] > interval[0])) throw values.error("interval", "expected (from to) with from < to");
     from_ = interval[0], to_ = interval[1];
     for (const auto& f : fields_) {
         if (f != "density" && f != "velocity" && f != "pressure" && f != "specificInternalEnergy")
-            throw dict.error("fields", "'" + f +
-                                           "' has no exact counterpart; valid: density velocity pressure "
-                                           "specificInternalEnergy");
+            throw values.error("fields", "'" + f +
+                                             "' has no exact counterpart; valid: density velocity pressure "
+                                             "specificInternalEnergy");
         requireField(dict, "fields", f);
     }
     star_ = std::make_unique<CsvFile>(

@@ -9,11 +9,13 @@ namespace mfdyn {
 class RiemannError final : public FunctionObject {
 public:
     RiemannError(const Dictionary& dict, const std::string& name, const RunContext& context);
+    static KeywordSchema keywords();
     void write() override;
     std::vector<ErrorNorm> errorNorms() const override { return norms_.latest(); }
     std::vector<std::string> summary() const override { return summary_; }
 
 private:
+    RiemannError(const KeywordValues& values, const std::string& name, const RunContext& context);
     std::unique_ptr<ShockTubeSolution> exact_;
     double t0_;
     double from_, to_;

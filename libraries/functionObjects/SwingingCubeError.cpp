@@ -29,17 +29,7 @@
 //         cloud 20;  interpolation mls;  h 0.13;      // h: else the smoothingLength field
 //         writeControl runTime;  writeInterval 0.004;
 //     }
-//
-//     keyword         meaning                                            required  default
-//     rho0            reference density [kg/m^3]                         yes
-//     youngsModulus   E [Pa]                                             yes
-//     poissonRatio    nu                                                 yes
-//     amplitude       U0 [m]                                             yes
-//     cloud           quadrature cells per side                          no        20
-//     volumeWeighted  quadrature at the particles, weights V_a           no        no
-//     components      also a row per component of P                      no        no
-//     interpolation, kernel, h, positionField: Interpolation.hpp        no        mls, wendlandC2, -,
-//     referencePosition
+// Keywords: doc/models/functionObject/swingingCubeError.md (the schema below).
 #include "functionObjects/SwingingCubeError.hpp"
 
 #include "particles/ParticleSet.hpp"
@@ -87,36 +77,52 @@ struct Accumulator {
 
 }  // namespace
 
+KeywordSchema SwingingCubeError::keywords() {
+    return KeywordSchema("functionObject", "swingingCubeError")
+        .scalar("rho0", "kg/m^3", "reference density")
+        .greaterThan(0)
+        .scalar("youngsModulus", "Pa", "Young's modulus E")
+        .greaterThan(0)
+        .scalar("poissonRatio", "-", "Poisson's ratio nu")
+        .greaterThan(-1)
+        .lessThan(0.5)
+        .scalar("amplitude", "m", "displacement amplitude U0 of the analytic mode")
+        .integer("cloud", "-", "background cloud: cells per side of the unit cube (one point per cell)")
+        .atLeast(1)
+        .orDefault(20)
+        .flag("volumeWeighted", "quadrature at the particles with weights V_a, instead of on the cloud")
+        .orDefault(false)
+        .flag("components", "also a row per component of P")
+        .orDefault(false)
+        .append(Interpolation::keywords("referencePosition", Interpolation::Method::mls))
+        .append(functionObjectKeywords());
+}
+
 SwingingCubeError::SwingingCubeError(const Dictionary& dict, const std::string& name,
                                      const RunContext& context)
-    : FunctionObject(dict, name, context),
-      rho0_(dict.get<double>("rho0")),
-      youngsModulus_(dict.get<double>("youngsModulus")),
-      poissonRatio_(dict.get<double>("poissonRatio")),
-      amplitude_(dict.get<double>("amplitude")),
-      cloud_(dict.getOrDefault<int>("cloud", 20)),
-      volumeWeighted_(dict.getOrDefault<bool>("volumeWeighted", false)),
-      components_(dict.getOrDefault<bool>("components", false)),
-      positionField_(dict.getOrDefault<std::string>("positionField", "referencePosition")),
+    : SwingingCubeError(keywords().read(dict), name, context) {}
+
+SwingingCubeError::SwingingCubeError(const KeywordValues& values, const std::string& name,
+                                     const RunContext& context)
+    : FunctionObject(values, name, context),
+      rho0_(values.scalar("rho0")),
+      youngsModulus_(values.scalar("youngsModulus")),
+      poissonRatio_(values.scalar("poissonRatio")),
+      amplitude_(values.scalar("amplitude")),
+      cloud_(int(values.integer("cloud"))),
+      volumeWeighted_(values.flag("volumeWeighted")),
+      components_(values.flag("components")),
+      positionField_(values.word("positionField")),
       norms_(outputFile("errorNorms.csv"), name) {
-    if (!(rho0_ > 0)) throw dict.error("rho0", "expected a positive density [kg/m^3]");
-    if (!(youngsModulus_ > 0)) throw dict.error("youngsModulus", "expected a positive modulus [Pa]");
-    if (!(poissonRatio_ > -1 && poissonRatio_ < 0.5))
-        throw dict.error("poissonRatio", "expected -1 < nu < 0.5");
-    if (!(cloud_ >= 1)) throw dict.error("cloud", "expected a whole number of cells per side >= 1");
+    const Dictionary& dict = values.dict();
     requireField(dict, "positionField", positionField_);
     requireField(dict, "type", "velocity");
     requireField(dict, "type", "firstPiolaStress");
     requireField(dict, "type", "mass");
     requireField(dict, "type", "density");
     const int dim = context.dimension();
-    if (volumeWeighted_) {
-        // Interpolation keywords are not used; read them so that they are not reported.
-        for (const char* key : {"interpolation", "kernel", "h"}) dict.findEntry(key);
-        return;
-    }
-    interpolation_ =
-        std::make_unique<Interpolation>(dict, context.fields(), positionField_, Interpolation::Method::mls);
+    if (volumeWeighted_) return;  // the interpolation keywords are read (by the schema) but not used
+    interpolation_ = std::make_unique<Interpolation>(values, context.fields());
     std::size_t count = 1;
     for (int k = 0; k < dim; ++k) count *= std::size_t(cloud_);
     points_.assign(count, SamplePoint{0, 0, 0});

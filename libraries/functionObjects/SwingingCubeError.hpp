@@ -13,6 +13,7 @@ namespace mfdyn {
 class SwingingCubeError final : public FunctionObject {
 public:
     SwingingCubeError(const Dictionary& dict, const std::string& name, const RunContext& context);
+    static KeywordSchema keywords();
     ~SwingingCubeError() override;
     void write() override;
     std::vector<ErrorNorm> errorNorms() const override { return norms_.latest(); }
@@ -26,6 +27,7 @@ public:
     std::vector<std::pair<std::string, Norms>> compute() const;
 
 private:
+    SwingingCubeError(const KeywordValues& values, const std::string& name, const RunContext& context);
     template <int Dim>
     std::vector<std::pair<std::string, Norms>> computeDim() const;
     // Stencils of the cloud points, again if the particles were reordered or changed in number.

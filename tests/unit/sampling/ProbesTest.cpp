@@ -1,8 +1,20 @@
 // The probes function object in a hand-made run context: a 2D lattice carrying linear fields,
 // so that first-order MLS gives the exact values at the probes (to the 10 digits of the CSV).
+// In the same context, the functionObject family's keyword schemas (FunctionObjectKeywords).
 #include "core/Dictionary.hpp"
+#include "functionObjects/CableError.hpp"
+#include "functionObjects/ConservedQuantities.hpp"
+#include "functionObjects/DebrisCloud.hpp"
+#include "functionObjects/EllipticalDropError.hpp"
+#include "functionObjects/FieldMinMax.hpp"
 #include "functionObjects/FunctionObject.hpp"
+#include "functionObjects/IsothermalShockBarError.hpp"
+#include "functionObjects/Probes.hpp"
+#include "functionObjects/RiemannError.hpp"
+#include "functionObjects/SwingingCubeError.hpp"
 #include "particles/ParticleSet.hpp"
+
+#include "../SchemaTestTools.hpp"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
@@ -125,6 +137,72 @@ TEST(Probes, unknownFieldIsAnInputError) {
         ADD_FAILURE() << "no error";
     } catch (const InputError& e) {
         EXPECT_NE(std::string(e.what()).find("no field 'pressure'"), std::string::npos) << e.what();
+    }
+    fs::remove_all(root);
+}
+
+TEST(FunctionObjectKeywords, EveryTypeDeclaresItsKeywordsThenWriteControl) {
+    const auto schemas = {CableError::keywords(),       ConservedQuantities::keywords(),
+                          DebrisCloud::keywords(),      EllipticalDropError::keywords(),
+                          FieldMinMax::keywords(),      IsothermalShockBarError::keywords(),
+                          Probes::keywords(),           RiemannError::keywords(),
+                          SwingingCubeError::keywords()};
+    test::expectRegisteredSchemas("functionObject", schemas, "libraries/functionObjects/");
+    const KeywordSchema common = functionObjectKeywords();
+    for (const KeywordSchema& schema : schemas) {
+        SCOPED_TRACE(schema.type());
+        const auto& k = schema.keywords();
+        ASSERT_GE(k.size(), common.keywords().size());
+        const std::size_t own = k.size() - common.keywords().size();
+        for (std::size_t i = 0; i < common.keywords().size(); ++i)
+            EXPECT_EQ(k[own + i].name, common.keywords()[i].name);
+    }
+    EXPECT_EQ(common.find("writeControl")->defaultValue, "timeStep");
+    EXPECT_EQ(RiemannError::keywords().find("fields")->defaultValue, "(density velocity pressure)");
+    // The interpolation keywords are declared once, with each caller's defaults.
+    EXPECT_EQ(Probes::keywords().find("interpolation")->defaultValue, "shepard");
+    EXPECT_EQ(SwingingCubeError::keywords().find("interpolation")->defaultValue, "mls");
+    EXPECT_EQ(SwingingCubeError::keywords().find("positionField")->defaultValue, "referencePosition");
+}
+
+TEST(FunctionObjectKeywords, BadEntriesNameTheEntry) {
+    const fs::path root = fs::temp_directory_path() / ("mfdynFoKeywords-" + std::to_string(::getpid()));
+    fs::create_directories(root / "system");
+    std::ofstream(root / "system" / "controlDict") << controlDictText;
+    {
+        TestContext context(root);
+        fill(context.particles, 0.0);
+        const auto errorOf = [&](const std::string& text) {
+            return test::inputErrorOf(
+                [&] { FunctionObject::New(Dictionary::parse(text, "functions/f"), "f", context); }, text);
+        };
+        const auto expectIn = [](const std::string& message, const std::string& part) {
+            EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' not in: " << message;
+        };
+        const std::string control = errorOf("type fieldMinMax; fields (density); writeControl sometimes;");
+        expectIn(control, "keyword 'writeControl'");
+        expectIn(control, "timeStep | runTime | adjustableRunTime | writeTime");
+        expectIn(errorOf("type fieldMinMax; fields (density); writeControl runTime;"),
+                 "missing keyword 'writeInterval'");
+        expectIn(errorOf("type fieldMinMax; fields (density); writeInterval 2.5;"), "whole number of steps");
+        expectIn(errorOf("type fieldMinMax; fields (density); mode sideways;"), "magnitude | component");
+        expectIn(errorOf("type fieldMinMax;"), "missing keyword 'fields'");
+        expectIn(errorOf("type probes; fields (density); points ((0.5 0.5 0)); h 0.065; interpolation rbf;"),
+                 "shepard | mls");
+        expectIn(errorOf("type probes; fields (density); points ((0.5 0.5 0)); h -1;"), "keyword 'h'");
+        expectIn(errorOf("type probes; fields (density); points ((0.5 0.5 0)); h 0.065; positionField x0;"),
+                 "vector field 'x0'");
+        const std::string trim = errorOf(
+            "type debrisCloud; direction (1 0); front 0; rear 1; trim 0.5; "
+            "targetRegions (plate);");
+        expectIn(trim, "keyword 'trim'");
+        expectIn(trim, "< 0.5");
+        expectIn(errorOf("type swingingCubeError; rho0 1100; youngsModulus 17e6; poissonRatio 0.5; "
+                         "amplitude 5e-4;"),
+                 "keyword 'poissonRatio'");
+        expectIn(errorOf("type cableError; rho0 8000; youngsModulus 2e11; length 10; loadedLength 12; "
+                         "velocity 5;"),
+                 "loadedLength <= length");
     }
     fs::remove_all(root);
 }
