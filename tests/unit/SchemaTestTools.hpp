@@ -45,4 +45,15 @@ inline void expectRegisteredSchemas(const char* family, std::initializer_list<Ke
     }
 }
 
+// `schema` ends with the keywords of `common`, in their order (a family's shared keywords appended
+// after each type's own).
+inline void expectEndsWith(const KeywordSchema& schema, const KeywordSchema& common) {
+    SCOPED_TRACE(schema.type());
+    const auto& k = schema.keywords();
+    ASSERT_GE(k.size(), common.keywords().size());
+    const std::size_t own = k.size() - common.keywords().size();
+    for (std::size_t i = 0; i < common.keywords().size(); ++i)
+        EXPECT_EQ(k[own + i].name, common.keywords()[i].name);
+}
+
 }  // namespace mfdyn::test
