@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
+#include <optional>
 #include <sstream>
 
 namespace mfdyn {
@@ -46,17 +48,44 @@ std::string hexDouble(double x) {
     return s;
 }
 
+// A finite real written as hexadecimal (exact). strtod alone would take "", "nan" and "inf".
 double parseHexDouble(const Dictionary& state, const std::string& key) {
     const std::string text = state.get<std::string>(key);
     char* end = nullptr;
     const double x = std::strtod(text.c_str(), &end);
-    if (*end != '\0') throw state.error(key, "expected an exact (hexadecimal) real, found '" + text + "'");
+    if (text.empty() || *end != '\0' || !std::isfinite(x))
+        throw state.error(key, "expected an exact finite (hexadecimal) real, found '" + text +
+                                   "': the state file is damaged; restart from an earlier time");
     return x;
 }
 
-double positive(const Dictionary& dict, const std::string& key, double value) {
-    if (!(value > 0)) throw dict.error(key, key + " must be positive, found " + std::to_string(value));
+std::string show(double x) {
+    std::ostringstream s;
+    s.precision(17);
+    s << x;
+    return s.str();
+}
+
+// A run-control real must be a number: 1e999 reads as inf and would run forever or never.
+double finite(const Dictionary& dict, const std::string& key, double value) {
+    if (!std::isfinite(value)) throw dict.error(key, key + " must be a finite number, found " + show(value));
     return value;
+}
+
+double positive(const Dictionary& dict, const std::string& key, double value) {
+    if (!(value > 0) || !std::isfinite(value))
+        throw dict.error(key, key + " must be positive and finite, found " + show(value));
+    return value;
+}
+
+// Significant digits in a time name: "0.125" 3, "1e-05" 1, "100" 3.
+int significantDigits(const std::string& name) {
+    std::string mantissa = name.substr(0, name.find_first_of("eE"));
+    std::string digits;
+    for (char c : mantissa)
+        if (c >= '0' && c <= '9') digits += c;
+    const auto first = digits.find_first_not_of('0');
+    return first == std::string::npos ? 1 : int(digits.size() - first);
 }
 
 }  // namespace
@@ -77,11 +106,16 @@ void Time::readControls(const Dictionary& dict) {
             message += " (did you mean '" + g + "'?)";
         throw dict.error("startFrom", message);
     }
-    startTime_ = dict.getOrDefault<double>("startTime", 0.0);
+    startTime_ = finite(dict, "startTime", dict.getOrDefault<double>("startTime", 0.0));
     stopAt_ = readChoice<StopAt>(
         dict, "stopAt", StopAt::endTime,
         {{"endTime", StopAt::endTime}, {"writeNow", StopAt::writeNow}, {"noWriteNow", StopAt::noWriteNow}});
-    endTime_ = dict.get<double>("endTime");
+    endTime_ = finite(dict, "endTime", dict.get<double>("endTime"));
+    // An end at or before the start has nothing to run: refused rather than rewriting the start.
+    // (A restart whose latest time already is endTime is another matter: see finished().)
+    if (!(endTime_ > startTime_))
+        throw dict.error("endTime", "endTime " + show(endTime_) + " is not after startTime " +
+                                        show(startTime_) + ": nothing to run; set endTime above startTime");
     fixedDeltaT_ = positive(dict, "deltaT", dict.get<double>("deltaT"));
     adjustTimeStep_ = dict.getOrDefault<bool>("adjustTimeStep", false);
     maxCo_ = positive(dict, "maxCo", dict.getOrDefault<double>("maxCo", 1.0));
@@ -117,9 +151,12 @@ std::string Time::checkModified() {
 
     const double oldEnd = endTime_, oldInterval = writeInterval_;
     const StopAt oldStop = stopAt_;
-    // A half-edited file must not kill a long run: keep the old controls and say why.
+    // A half-edited file must not kill a long run: keep the old controls and say why. The new
+    // ones are read into a copy, so an error half way leaves none of them half applied.
     try {
-        readControls(Dictionary::read(controlDictPath_));
+        Time next(*this);
+        next.readControls(Dictionary::read(controlDictPath_));
+        *this = next;
     } catch (const Error& e) {
         Log::warning(
             std::string("controlDict changed but could not be re-read; keeping the old controls:\n") +
@@ -145,16 +182,96 @@ void Time::start(double value, const std::string& name) {
     writeIndex_ = std::int64_t(std::floor(value / writeInterval_ * (1 + landing)));
     if (writeControl_ == WriteControl::timeStep) writeIndex_ = 0;
     if (!adjustTimeStep_) deltaT_ = desiredDeltaT_ = fixedDeltaT_;
+    writtenName_ = name;
+    checkWriteNames();
 }
 
 void Time::restore(const Dictionary& state) {
-    value_ = parseHexDouble(state, "timeExact");
-    deltaT_ = parseHexDouble(state, "deltaTExact");
-    desiredDeltaT_ = parseHexDouble(state, "desiredDeltaTExact");
-    timeIndex_ = state.get<long long>("timeIndex");
-    writeIndex_ = state.get<long long>("writeIndex");
+    const double value = parseHexDouble(state, "timeExact");
+    if (value < 0) throw state.error("timeExact", "the time " + show(value) + " is negative");
+    // The directory's name is the time rounded to its digits: a state that disagrees was copied
+    // from elsewhere or damaged, and would put the run at a time other than the one it claims.
+    double named = 0;
+    char* end = nullptr;
+    named = std::strtod(timeName_.c_str(), &end);
+    if (!timeName_.empty() && *end == '\0' && std::isfinite(named)) {
+        const int digits = significantDigits(timeName_);
+        const double scale =
+            named == 0 ? 0 : std::pow(10.0, std::floor(std::log10(std::abs(named))) - digits + 1);
+        if (std::abs(value - named) > 0.5 * scale * (1 + 1e-9))
+            throw state.error("timeExact", "the time " + show(value) +
+                                               " does not match the directory name '" + timeName_ +
+                                               "': the state belongs to another time");
+    }
+    const double dt = parseHexDouble(state, "deltaTExact");
+    if (!(dt > 0)) throw state.error("deltaTExact", "the time step " + show(dt) + " is not positive");
+    const double desired = parseHexDouble(state, "desiredDeltaTExact");
+    if (desired < 0)
+        throw state.error("desiredDeltaTExact", "the time step " + show(desired) + " is negative");
+    const long long index = state.get<long long>("timeIndex");
+    if (index < 0) throw state.error("timeIndex", "the step index " + std::to_string(index) + " is negative");
+    const long long writes = state.get<long long>("writeIndex");
+    if (writes < 0)
+        throw state.error("writeIndex", "the write index " + std::to_string(writes) + " is negative");
+    value_ = value, deltaT_ = dt, desiredDeltaT_ = desired, timeIndex_ = index, writeIndex_ = writes;
     timeName_ = nameOf(value_);
     state.markAllRead();
+}
+
+bool Time::finished() const {
+    return !(value_ < endTime_ - landing * std::max(std::abs(endTime_), deltaT_));
+}
+
+std::vector<double> Time::predictedWriteTimes() const {
+    // Only the last million writes are looked at: the names crowd together at the largest times.
+    constexpr double most = 1e6;
+    std::vector<double> times;
+    if (finished()) return times;
+    const double end = endTime_ - landing * std::abs(endTime_);
+    if (writeControl_ == WriteControl::timeStep) {
+        if (adjustTimeStep_) return {};  // steps unknown until run
+        const double spacing = fixedDeltaT_ * writeInterval_;
+        const double count = std::floor((endTime_ - value_) / spacing);
+        const double first = std::max(1.0, count - most);
+        for (double k = first; value_ + k * spacing < end; ++k) times.push_back(value_ + k * spacing);
+    } else {
+        const double count = std::floor(endTime_ / writeInterval_) - double(writeIndex_);
+        const double first = double(writeIndex_) + std::max(1.0, count - most);
+        for (double k = first; k * writeInterval_ < end; ++k)
+            if (k * writeInterval_ > value_) times.push_back(k * writeInterval_);
+    }
+    times.push_back(endTime_);
+    return times;
+}
+
+namespace {
+// The first pair of consecutive times (after `startName`) that `precision` digits name alike.
+std::optional<std::pair<double, double>> collision(const std::vector<double>& times, double start,
+                                                   const std::string& startName, int precision) {
+    char a[64], b[64];
+    std::snprintf(a, sizeof a, "%s", startName.c_str());
+    double previous = start;
+    for (double t : times) {
+        std::snprintf(b, sizeof b, "%.*g", precision, t);
+        if (std::strcmp(a, b) == 0) return std::make_pair(previous, t);
+        std::memcpy(a, b, sizeof a);
+        previous = t;
+    }
+    return std::nullopt;
+}
+}  // namespace
+
+void Time::checkWriteNames() const {
+    const auto times = predictedWriteTimes();
+    const auto clash = collision(times, value_, timeName_, writePrecision_);
+    if (!clash) return;
+    int needed = writePrecision_ + 1;
+    while (needed < 17 && collision(times, value_, timeName_, needed)) ++needed;
+    throw InputError(
+        "writePrecision " + std::to_string(writePrecision_) + " names the write times " + show(clash->first) +
+        " and " + show(clash->second) + " alike ('" + nameOf(clash->second) +
+        "'): the second write would replace the first. Set writePrecision " + std::to_string(needed) +
+        " (or more) in " + controlDictPath_.string() + ", or a larger writeInterval");
 }
 
 std::string Time::state() const {
@@ -252,6 +369,14 @@ void Time::advance(double dt) {
     // Snap the name (not the value) to the write time it landed on, so directories read 0.1, not
     // 0.0999999999.
     timeName_ = nameOf(value_);
+    // Writes start-up could not foresee (adjustTimeStep with writeControl timeStep, a changed
+    // writeInterval) are checked here, before the directory of an earlier time is replaced.
+    if (writeTime_ && timeName_ == writtenName_)
+        throw RunError("the write at t = " + show(value_) + " (step " + std::to_string(timeIndex_) +
+                       ") would be named '" + timeName_ +
+                       "', like the previous write: it would replace that directory. writePrecision " +
+                       std::to_string(writePrecision_) + " is too low for times this close; raise it in " +
+                       controlDictPath_.string() + " and restart from the latest time");
 }
 
 }  // namespace mfdyn

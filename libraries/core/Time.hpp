@@ -23,6 +23,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace mfdyn {
 
@@ -50,7 +51,11 @@ public:
     const std::string& startFrom() const { return startFrom_; }
     double startTime() const { return startTime_; }
     void start(double value, const std::string& name);
+    // restore() checks every value against the name given to start() (the directory's): an error
+    // names the state file and line.
     void restore(const Dictionary& state);
+    // The start already is at endTime (a restart of a finished run): nothing to do.
+    bool finished() const;
     // Entries for <time>/state.
     std::string state() const;
 
@@ -77,10 +82,15 @@ public:
     void advance(double dt);
     bool writeTime() const { return writeTime_; }
     // Counts the write (so the next write time is known); called by whoever wrote.
-    void wrote() { writeTime_ = false; }
+    void wrote() { writeTime_ = false, writtenName_ = timeName_; }
 
 private:
     double nextWriteTime() const;
+    // The write times ahead when they can be known at the start (not with adjustTimeStep and
+    // writeControl timeStep), ending with endTime.
+    std::vector<double> predictedWriteTimes() const;
+    // An InputError when two write times ahead get the same name (writePrecision too low).
+    void checkWriteNames() const;
 
     std::filesystem::path controlDictPath_;
     std::filesystem::file_time_type controlDictStamp_{};
@@ -106,6 +116,7 @@ private:
     std::int64_t timeIndex_ = 0;
     std::int64_t writeIndex_ = 0;  // write intervals completed (runTime, adjustableRunTime)
     std::string timeName_ = "0";
+    std::string writtenName_ = "0";  // the last write's (or the start's) directory name
     bool writeTime_ = false;
 };
 

@@ -5,13 +5,33 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+#include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <limits>
+#include <tuple>
 #include <vector>
 
 using namespace mfdyn;
 
 namespace {
+
+// The message of the InputError `text` gives, "" when it gives none.
+std::string inputError(const std::string& text, double start = 0, const std::string& startName = "0") {
+    try {
+        Time time("/nonexistent/controlDict", Dictionary::parse(text, "controlDict"));
+        time.start(start, startName);
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+bool has(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
 
 Time makeTime(const std::string& text) {
     const Dictionary dict = Dictionary::parse(text, "controlDict");
@@ -126,6 +146,8 @@ TEST(Time, StateRoundTripsExactly) {
     for (int k = 0; k < 7; ++k) time.advance(time.chooseDeltaT({0.0123456789, "vote"}));
     Time copy = makeTime(
         "endTime 1; deltaT 0.1; adjustTimeStep yes; writeControl adjustableRunTime; writeInterval 0.3;");
+    // As SolverRun does: start at the directory the state was written in, then restore it.
+    copy.start(time.value(), time.timeName());
     copy.restore(Dictionary::parse(time.state(), "state"));
     EXPECT_EQ(copy.value(), time.value());
     EXPECT_EQ(copy.deltaT(), time.deltaT());
@@ -157,4 +179,169 @@ TEST(Time, ConstantStepThatDividesTheWriteIntervalLeavesNoSliverStep) {
     for (double dt : steps) ASSERT_NEAR(dt, 1e-6, 1e-15);
     ASSERT_EQ(writes.size(), 5u);
     for (std::size_t k = 0; k < writes.size(); ++k) EXPECT_NEAR(writes[k], 0.002 * double(k + 1), 1e-15);
+}
+
+// Issue 14: an end at or before the start used to run no step and still rewrite the start's
+// particles (and add a state there), exiting 0.
+TEST(Time, EndTimeNotAfterStartTimeIsAnErrorAtEndTimesLine) {
+    const std::string equal = inputError("startTime 0.5;\nendTime 0.5;\ndeltaT 0.1; writeInterval 1;");
+    EXPECT_TRUE(has(equal, "controlDict:2:")) << equal;
+    EXPECT_TRUE(has(equal, "endTime 0.5 is not after startTime 0.5")) << equal;
+    const std::string before = inputError("endTime -1; deltaT 0.1; writeInterval 1;");
+    EXPECT_TRUE(has(before, "controlDict:1:")) << before;
+    EXPECT_TRUE(has(before, "not after startTime 0")) << before;
+}
+
+// Issue 14: non-finite run controls were taken as they came (an endTime of 1e999 ran forever,
+// a NaN writeInterval never wrote); each is now refused at its own line. (Time checks them even
+// though the dictionary reader may refuse inf and nan already: a value may come from elsewhere.)
+TEST(Time, NonFiniteOrNonPositiveControlsAreErrorsAtTheirLine) {
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {"endTime 1e999;\ndeltaT 0.1; writeInterval 1;", "endTime must be a finite number"},
+        {"endTime -1e999;\ndeltaT 0.1; writeInterval 1;", "endTime must be a finite number"},
+        {"startTime -1e999;\nendTime 1; deltaT 0.1; writeInterval 1;", "startTime must be a finite number"},
+        {"endTime 1;\ndeltaT 1e999; writeInterval 1;", "deltaT must be positive and finite"},
+        {"endTime 1;\ndeltaT 0; writeInterval 1;", "deltaT must be positive and finite"},
+        {"endTime 1;\ndeltaT 0.1; writeControl runTime; writeInterval 1e999;",
+         "writeInterval must be positive and finite"},
+        {"endTime 1;\ndeltaT 0.1; writeControl runTime; writeInterval -0.1;",
+         "writeInterval must be positive and finite"},
+        {"endTime 1;\ndeltaT 0.1; writeInterval 1; maxDeltaT 1e999;",
+         "maxDeltaT must be positive and finite"},
+    };
+    for (const auto& [text, expected] : cases) {
+        const std::string what = inputError(text);
+        // 1e999 may also be refused by the parser itself (out of range); either way at its line.
+        EXPECT_TRUE(has(what, expected) || (has(expected, "finite") && has(what, "out of range")))
+            << text << "\n -> " << what;
+        EXPECT_TRUE(has(what, "controlDict:")) << what;
+    }
+    // On line 2 where the keyword is on line 2.
+    EXPECT_TRUE(has(inputError("endTime 1;\ndeltaT 1e999; writeInterval 1;"), "controlDict:2:"));
+}
+
+// A restart whose latest time is the end time has nothing to do (SolverRun then ends at once,
+// writing nothing); a start before the end has.
+TEST(Time, FinishedWhenTheStartIsTheEndTime) {
+    Time time = makeTime("startFrom latestTime; endTime 1; deltaT 0.1; writeInterval 1;");
+    EXPECT_FALSE(time.finished());
+    time.start(1.0, "1");
+    EXPECT_TRUE(time.finished());
+    EXPECT_FALSE(time.running());
+}
+
+// Issue 14: writePrecision 2 with writeInterval 0.05 up to 2 named 1.05 and 1.1 alike (and so
+// on: 40 writes into fewer directories, each replacing the previous). Refused at start-up with
+// the precision that is needed.
+TEST(Time, WriteTimesNamedAlikeAreRefusedAtStartUpWithThePrecisionNeeded) {
+    const std::string what = inputError(
+        "endTime 2; deltaT 0.01; writeControl adjustableRunTime; writeInterval 0.05; writePrecision 2;");
+    EXPECT_TRUE(has(what, "writePrecision 2 names the write times")) << what;
+    EXPECT_TRUE(has(what, "Set writePrecision 3")) << what;
+    // runTime and a fixed-step timeStep control are foreseen as well.
+    EXPECT_TRUE(
+        has(inputError("endTime 2; deltaT 0.01; writeControl runTime; writeInterval 0.05; writePrecision 2;"),
+            "Set writePrecision 3"));
+    EXPECT_TRUE(
+        has(inputError("endTime 2; deltaT 0.01; writeControl timeStep; writeInterval 5; writePrecision 2;"),
+            "Set writePrecision 3"));
+    // The first write against the start's name: from 1 with steps of 1e-3, "1.001" needs 4 digits.
+    const std::string first = inputError(
+        "startTime 1; endTime 1.005; deltaT 0.001; writeControl timeStep; writeInterval 1; writePrecision 3;",
+        1.0, "1");
+    EXPECT_TRUE(has(first, "Set writePrecision 4")) << first;
+    // Enough digits: no error.
+    EXPECT_EQ(
+        inputError(
+            "endTime 2; deltaT 0.01; writeControl adjustableRunTime; writeInterval 0.05; writePrecision 3;"),
+        "");
+}
+
+// With adjustTimeStep and writeControl timeStep the write times are not known at start-up: the
+// clash is caught at the write, before the earlier directory is replaced.
+TEST(Time, WriteNamedLikeThePreviousOneIsARunErrorNamingWritePrecision) {
+    Time time = makeTime(
+        "endTime 1; deltaT 1e-4; adjustTimeStep yes; writeControl timeStep; writeInterval 1; writePrecision "
+        "2;");
+    time.advance(time.chooseDeltaT({0.011, "vote"}));  // t = 1.2e-4: "0.00012"
+    ASSERT_TRUE(time.writeTime());
+    time.wrote();
+    time.advance(0.01);  // t = 0.01012: "0.01"
+    time.wrote();
+    try {
+        time.advance(1e-5);  // t = 0.01013: "0.01" again
+        FAIL() << "no error";
+    } catch (const RunError& e) {
+        EXPECT_TRUE(has(e.what(), "would be named '0.01'")) << e.what();
+        EXPECT_TRUE(has(e.what(), "writePrecision 2 is too low")) << e.what();
+    }
+}
+
+namespace {
+
+// A state written at t = 0.25 after 5 steps, with one entry replaced by `key value`.
+std::string restoreError(const std::string& key, const std::string& value, const std::string& name = "0.25") {
+    const std::string controls = "endTime 1; deltaT 0.05; writeControl timeStep; writeInterval 5;";
+    Time source = makeTime(controls);
+    for (int k = 0; k < 5; ++k) source.advance(source.chooseDeltaT(unlimited));
+    std::string state = source.state();
+    const auto at = state.find(key);
+    state.replace(at, state.find(';', at) - at, key + " " + value);
+    Time time = makeTime(controls);
+    time.start(0.25, name);
+    try {
+        time.restore(Dictionary::parse(state, "0.25/state"));
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+// Issue 14: a state with timeExact "nan" ran at t = nan and wrote a directory `nan`. Every
+// value of the state is checked, the error naming the state file and line.
+TEST(Time, RestoreRefusesDamagedStatesNamingTheFileAndLine) {
+    EXPECT_EQ(restoreError("timeIndex", "5"), "");  // the unchanged state is fine
+    const std::vector<std::tuple<std::string, std::string, std::string>> cases{
+        {"timeExact", "\"nan\"", "expected an exact finite"},
+        {"timeExact", "\"inf\"", "expected an exact finite"},
+        {"timeExact", "\"\"", "expected an exact finite"},
+        {"timeExact", "\"-0x1p-2\"", "is negative"},
+        {"timeExact", "\"0x1p-1\"", "does not match the directory name '0.25'"},
+        {"deltaTExact", "\"0x0p+0\"", "is not positive"},
+        {"deltaTExact", "\"nan\"", "expected an exact finite"},
+        {"desiredDeltaTExact", "\"-0x1p-3\"", "is negative"},
+        {"timeIndex", "-1", "step index -1 is negative"},
+        {"writeIndex", "-3", "write index -3 is negative"},
+    };
+    for (const auto& [key, value, expected] : cases) {
+        const std::string what = restoreError(key, value);
+        EXPECT_TRUE(has(what, expected)) << key << " " << value << " -> " << what;
+        EXPECT_TRUE(has(what, "0.25/state:")) << what;
+        EXPECT_TRUE(has(what, key)) << what;
+    }
+    // The name's digits set the tolerance: 0.25 in a directory written with 1 digit, "0.3".
+    EXPECT_EQ(restoreError("timeIndex", "5", "0.3"), "");
+    EXPECT_TRUE(has(restoreError("timeIndex", "5", "0.4"), "does not match"));
+    EXPECT_TRUE(has(restoreError("timeIndex", "5", "0.26"), "does not match"));
+}
+
+// A controlDict re-read that fails half way keeps all the old controls: the entries before the
+// bad one used to be applied already (here startTime), against "keeping the old controls".
+TEST(Time, FailedReReadKeepsEveryOldControl) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / ("mfdynTimeReRead" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const fs::path file = dir / "controlDict";
+    std::ofstream(file) << "endTime 1; deltaT 0.1; writeInterval 1;\n";
+    Time time(file, Dictionary::read(file));
+    time.start(0.0, "0");
+    std::ofstream(file) << "startTime 0.5; endTime 1; deltaT 0.2; writeInterval 1; writePrecision 99;\n";
+    fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(5));
+    EXPECT_EQ(time.checkModified(), "");
+    EXPECT_EQ(time.startTime(), 0.0);
+    EXPECT_EQ(time.deltaT(), 0.1);
+    EXPECT_EQ(time.writePrecision(), 6);
+    fs::remove_all(dir);
 }
