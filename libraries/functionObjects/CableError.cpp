@@ -73,7 +73,7 @@ CableError::CableError(const KeywordValues& values, const std::string& name, con
     : FunctionObject(values, name, context),
       exact_(cableFrom(values)),
       positionField_(values.word("positionField")),
-      norms_(outputFile("errorNorms.csv"), name) {
+      norms_(outputFile("errorNorms.csv"), name, startTime()) {
     const Dictionary& dict = values.dict();
     const FieldStore& fields = context.fields();
     const int dim = context.dimension();
@@ -96,7 +96,8 @@ CableError::CableError(const KeywordValues& values, const std::string& name, con
     tipX_ = X.component(tip_, 0);
     csv_ = std::make_unique<CsvFile>(outputFile("cable.csv"),
                                      std::vector<std::string>{"time", "tipVelocity", "exactTipVelocity",
-                                                              "tipDisplacement", "exactTipDisplacement"});
+                                                              "tipDisplacement", "exactTipDisplacement"},
+                                     startTime());
 }
 
 std::size_t CableError::locateTip() const {

@@ -40,7 +40,7 @@ ConservedQuantities::ConservedQuantities(const KeywordValues& values, const std:
     if (context.internalEnergy()) columns_.push_back("internalEnergy");
     if (context.potentialEnergy()) columns_.push_back("potentialEnergy");
     columns_.push_back("totalEnergy");
-    csv_ = std::make_unique<CsvFile>(outputFile("conservedQuantities.csv"), columns_);
+    csv_ = std::make_unique<CsvFile>(outputFile("conservedQuantities.csv"), columns_, startTime());
 }
 
 std::vector<double> ConservedQuantities::measure() const {

@@ -84,7 +84,8 @@ DebrisCloud::DebrisCloud(const KeywordValues& values, const std::string& name, c
     }
     csv_ = std::make_unique<CsvFile>(outputFile("debrisCloud.csv"),
                                      std::vector<std::string>{"time", "length", "width", "lengthOverWidth",
-                                                              "holeDiameter", "debrisParticles"});
+                                                              "holeDiameter", "debrisParticles"},
+                                     startTime());
 }
 
 void DebrisCloud::write() {

@@ -68,7 +68,7 @@ EllipticalDropError::EllipticalDropError(const KeywordValues& values, const std:
     : FunctionObject(values, name, context),
       exact_(values.scalar("A0")),
       radius_(values.optionalScalar("radius").value_or(0.0)),
-      norms_(outputFile("errorNorms.csv"), name) {
+      norms_(outputFile("errorNorms.csv"), name, startTime()) {
     const Dictionary& dict = values.dict();
     if (context.dimension() != 2)
         throw dict.error("type", "ellipticalDropError measures a 2D drop; this case is " +
@@ -81,7 +81,7 @@ EllipticalDropError::EllipticalDropError(const KeywordValues& values, const std:
             throw dict.error("type", std::string("this run has no field '") + f + "'");
     axes_ = std::make_unique<CsvFile>(
         outputFile("semiAxes.csv"),
-        std::vector<std::string>{"time", "a", "b", "aExact", "bExact", "ab", "abExact", "A"});
+        std::vector<std::string>{"time", "a", "b", "aExact", "bExact", "ab", "abExact", "A"}, startTime());
 }
 
 void EllipticalDropError::write() {

@@ -41,7 +41,7 @@ FieldMinMax::FieldMinMax(const KeywordValues& values, const std::string& name, c
         for (const auto& p : parts)
             for (const char* what : {"_min", "_minId", "_max", "_maxId"}) columns.push_back(p + what);
     }
-    csv_ = std::make_unique<CsvFile>(outputFile("fieldMinMax.csv"), columns);
+    csv_ = std::make_unique<CsvFile>(outputFile("fieldMinMax.csv"), columns, startTime());
 }
 
 void FieldMinMax::write() {

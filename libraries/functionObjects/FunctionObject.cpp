@@ -21,7 +21,7 @@ FunctionObject::FunctionObject(const Dictionary& dict, const std::string& name, 
 
 FunctionObject::FunctionObject(const KeywordValues& values, const std::string& name,
                                const RunContext& context)
-    : name_(name), context_(context) {
+    : name_(name), context_(context), startTime_(context.time().value()) {
     const std::string& control = values.word("writeControl");
     const std::optional<double> interval = values.optionalScalar("writeInterval");
     if (control == "timeStep") {
@@ -81,8 +81,8 @@ std::filesystem::path FunctionObject::outputFile(const std::string& fileName) co
     return context_.runCase().postProcessing() / name_ / context_.startTimeName() / fileName;
 }
 
-ErrorNormWriter::ErrorNormWriter(const std::filesystem::path& file, std::string source)
-    : csv_(file, {"time", "field", "L1", "L2", "Linf"}), source_(std::move(source)) {}
+ErrorNormWriter::ErrorNormWriter(const std::filesystem::path& file, std::string source, double startTime)
+    : csv_(file, {"time", "field", "L1", "L2", "Linf"}, startTime), source_(std::move(source)) {}
 
 void ErrorNormWriter::add(double time, const std::string& field, double L1, double L2, double Linf) {
     csv_.row(time, field, {L1, L2, Linf});

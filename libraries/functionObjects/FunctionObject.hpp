@@ -14,6 +14,7 @@
 #include "functionObjects/RunContext.hpp"
 
 #include <filesystem>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -55,6 +56,8 @@ public:
 protected:
     const RunContext& context() const { return context_; }
     std::filesystem::path outputFile(const std::string& fileName) const;
+    // The time the run started from: a CsvFile series keeps an earlier run's rows before it.
+    double startTime() const { return startTime_; }
     // The run's field `name`, or an InputError at `key` listing the fields there are.
     const FieldBase& requireField(const Dictionary& dict, const std::string& key,
                                   const std::string& name) const;
@@ -62,6 +65,7 @@ protected:
 private:
     std::string name_;
     const RunContext& context_;
+    double startTime_;
     enum class Control { timeStep, runTime, writeTime } control_;
     double interval_;
     std::int64_t lastIndex_ = -1;
@@ -70,7 +74,8 @@ private:
 // Writes errorNorms.csv and keeps the latest norms per field for the summary.
 class ErrorNormWriter {
 public:
-    ErrorNormWriter(const std::filesystem::path& file, std::string source);
+    ErrorNormWriter(const std::filesystem::path& file, std::string source,
+                    double startTime = std::numeric_limits<double>::quiet_NaN());
     void add(double time, const std::string& field, double L1, double L2, double Linf);
     const std::vector<ErrorNorm>& latest() const { return latest_; }
 

@@ -69,7 +69,7 @@ IsothermalShockBarError::IsothermalShockBarError(const KeywordValues& values, co
       t0_(context.time().value()),
       frontWindow_(values.scalar("frontWindow")),
       fields_(values.words("fields")),
-      norms_(outputFile("errorNorms.csv"), name) {
+      norms_(outputFile("errorNorms.csv"), name, startTime()) {
     const Dictionary& dict = values.dict();
     if (context.dimension() != 1)
         throw dict.error("type", "isothermalShockBarError compares 1D runs; this case is " +
@@ -88,11 +88,13 @@ IsothermalShockBarError::IsothermalShockBarError(const KeywordValues& values, co
     plateaus_ = std::make_unique<CsvFile>(
         outputFile("plateaus.csv"),
         std::vector<std::string>{"time", "plateau", "density", "densityExact", "velocity", "velocityExact",
-                                 "pressure", "pressureExact", "particles"});
-    fronts_ = std::make_unique<CsvFile>(outputFile("fronts.csv"),
-                                        std::vector<std::string>{"time", "front", "x", "xExact", "h"});
+                                 "pressure", "pressureExact", "particles"},
+        startTime());
+    fronts_ = std::make_unique<CsvFile>(
+        outputFile("fronts.csv"), std::vector<std::string>{"time", "front", "x", "xExact", "h"}, startTime());
     contact_ = std::make_unique<CsvFile>(outputFile("contact.csv"),
-                                         std::vector<std::string>{"time", "pressureDeviation", "particles"});
+                                         std::vector<std::string>{"time", "pressureDeviation", "particles"},
+                                         startTime());
 }
 
 void IsothermalShockBarError::write() {

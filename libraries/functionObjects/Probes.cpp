@@ -49,7 +49,7 @@ Probes::Probes(const KeywordValues& values, const std::string& name, const RunCo
     }
     for (std::size_t k = 0; k < points_.size(); ++k)
         for (const auto& p : parts) columns.push_back("p" + std::to_string(k) + "_" + p);
-    csv_ = std::make_unique<CsvFile>(outputFile("probes.csv"), columns);
+    csv_ = std::make_unique<CsvFile>(outputFile("probes.csv"), columns, startTime());
 }
 
 void Probes::write() {

@@ -91,7 +91,7 @@ RiemannError::RiemannError(const KeywordValues& values, const std::string& name,
     : FunctionObject(values, name, context),
       t0_(context.time().value()),
       fields_(values.words("fields")),
-      norms_(outputFile("errorNorms.csv"), name) {
+      norms_(outputFile("errorNorms.csv"), name, startTime()) {
     const Dictionary& dict = values.dict();
     if (context.dimension() != 1)
         throw dict.error("type", "riemannError compares 1D runs; this case is " +
@@ -113,7 +113,7 @@ RiemannError::RiemannError(const KeywordValues& values, const std::string& name,
     }
     star_ = std::make_unique<CsvFile>(
         outputFile("starState.csv"),
-        std::vector<std::string>{"time", "pStar", "pStarExact", "uStar", "uStarExact"});
+        std::vector<std::string>{"time", "pStar", "pStarExact", "uStar", "uStarExact"}, startTime());
 }
 
 void RiemannError::write() {

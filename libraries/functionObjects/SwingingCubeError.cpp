@@ -113,7 +113,7 @@ SwingingCubeError::SwingingCubeError(const KeywordValues& values, const std::str
       volumeWeighted_(values.flag("volumeWeighted")),
       components_(values.flag("components")),
       positionField_(values.word("positionField")),
-      norms_(outputFile("errorNorms.csv"), name) {
+      norms_(outputFile("errorNorms.csv"), name, startTime()) {
     const Dictionary& dict = values.dict();
     requireField(dict, "positionField", positionField_);
     requireField(dict, "type", "velocity");
