@@ -22,6 +22,10 @@ int SignalHandler::stopRequested() {
     return received;
 }
 
+int SignalHandler::exitStatus(int signal) {
+    return 128 + signal;
+}
+
 const char* SignalHandler::name(int signal) {
     switch (signal) {
         case SIGINT:

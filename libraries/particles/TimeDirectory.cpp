@@ -5,6 +5,7 @@
 #include "core/Error.hpp"
 #include "particles/VtpWriter.hpp"
 
+#include <signal.h>
 #include <unistd.h>
 #include <algorithm>
 #include <cerrno>
@@ -128,15 +129,77 @@ bool removeTimeDirectory(const fs::path& caseDir, const std::string& timeName) {
     return true;
 }
 
+namespace {
+
+// The parts of a temporary's name, "<base>[.old].tmp-<pid>"; false when it is not one of ours.
+struct Temporary {
+    std::string base;  // the time name or particles.pvd
+    bool old = false;
+    long pid = 0;
+};
+
+bool parseTemporary(const std::string& name, Temporary& t) {
+    const std::size_t at = name.rfind(".tmp-");
+    if (at == std::string::npos || at == 0) return false;
+    const std::string digits = name.substr(at + 5);
+    if (digits.empty() || digits.size() > 9 || digits.find_first_not_of("0123456789") != std::string::npos)
+        return false;
+    t.pid = std::stol(digits);
+    t.base = name.substr(0, at);
+    t.old = t.base.size() > 4 && t.base.compare(t.base.size() - 4, 4, ".old") == 0;
+    if (t.old) t.base.resize(t.base.size() - 4);
+    double value = 0;
+    return t.pid > 0 && (t.base == "particles.pvd" || parseTime(t.base, value));
+}
+
+// The writer of a temporary is gone: no such process, or this one (which has written nothing
+// yet when the sweep runs, so the temporary is a dead earlier process's that had our pid).
+bool writerGone(long pid) {
+    if (pid == long(::getpid())) return true;
+    return ::kill(pid_t(pid), 0) != 0 && errno == ESRCH;
+}
+
+}  // namespace
+
 std::size_t removeStaleTemporaries(const fs::path& caseDir) {
     std::size_t removed = 0;
     std::error_code ec;
-    std::vector<fs::path> doomed;
-    for (const auto& entry : fs::directory_iterator(caseDir, ec))
-        if (entry.path().filename().string().find(".tmp-") != std::string::npos)
-            doomed.push_back(entry.path());
-    for (const auto& p : doomed) removed += fs::remove_all(p, ec) > 0;
+    std::vector<std::pair<fs::path, Temporary>> stale;
+    for (const auto& entry : fs::directory_iterator(caseDir, ec)) {
+        Temporary t;
+        if (parseTemporary(entry.path().filename().string(), t) && writerGone(t.pid))
+            stale.emplace_back(entry.path(), t);
+    }
+    // Killed between the renames: the new directory was complete (fill had returned) and the
+    // old one is its predecessor; keep the new one.
+    for (auto& [path, t] : stale) {
+        if (t.old || t.base == "particles.pvd") continue;
+        const fs::path target = caseDir / t.base;
+        const fs::path old = caseDir / (t.base + ".old.tmp-" + std::to_string(t.pid));
+        if (!fs::exists(target, ec) && fs::is_directory(old, ec) && fs::is_directory(path, ec)) {
+            fs::rename(path, target, ec);
+            if (!ec) {
+                ++removed;
+                path.clear();
+            }
+        }
+    }
+    for (const auto& [path, t] : stale)
+        if (!path.empty()) removed += fs::remove_all(path, ec) > 0;
     return removed;
+}
+
+fs::path moveAsideTimeDirectories(const fs::path& caseDir, const std::vector<std::string>& timeNames) {
+    fs::path aside;
+    for (int n = 1;; ++n) {
+        aside = caseDir / ("abandoned." + std::to_string(n));
+        std::error_code ec;
+        if (fs::exists(aside, ec)) continue;
+        if (fs::create_directory(aside, ec)) break;
+        if (ec) throw Error("cannot create directory '" + aside.string() + "': " + ec.message());
+    }
+    for (const auto& name : timeNames) renameOrThrow(caseDir / name, aside / name);
+    return aside;
 }
 
 }  // namespace mfdyn

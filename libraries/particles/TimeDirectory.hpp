@@ -48,7 +48,21 @@ std::vector<std::pair<double, std::string>> listTimeDirectories(const std::files
 // Removes <caseDir>/<timeName> (purgeWrite). Returns false when it did not exist.
 bool removeTimeDirectory(const std::filesystem::path& caseDir, const std::string& timeName);
 
-// Removes *.tmp-<pid> directories and files left in caseDir by killed runs. Returns how many.
+// Removes the temporaries that killed runs left in caseDir, and only those: the names the
+// functions above produce, <time>.tmp-<pid> and <time>.old.tmp-<pid> (time directories) and
+// particles.pvd.tmp-<pid>, whose <pid> is no live process (kill(pid, 0) fails with ESRCH) or is
+// this process (a dead earlier one had our pid: call this before writing). Anything else with
+// ".tmp-" in its name is the user's and is left alone. A run killed between the two renames of
+// writeDirectoryAtomically left a complete <time>.tmp-<pid> and the old <time>.old.tmp-<pid> but
+// no <time>: the new directory is put in place instead of being removed. Returns how many
+// temporaries were removed or put in place.
 std::size_t removeStaleTemporaries(const std::filesystem::path& caseDir);
+
+// Moves the time directories `timeNames` of caseDir into a new caseDir/abandoned.<N>/ (the
+// smallest N >= 1 not in use), where listTimeDirectories and Case::timeDirectories no longer see
+// them, and returns that directory. For a fresh start: the later times of an earlier run would
+// otherwise be taken up by startFrom latestTime although they no longer follow from the start.
+std::filesystem::path moveAsideTimeDirectories(const std::filesystem::path& caseDir,
+                                               const std::vector<std::string>& timeNames);
 
 }  // namespace mfdyn

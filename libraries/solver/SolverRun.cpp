@@ -1,5 +1,6 @@
 #include "solver/SolverRun.hpp"
 
+#include "core/CaseLock.hpp"
 #include "core/LibraryLoader.hpp"
 #include "core/Parallel.hpp"
 #include "core/SignalHandler.hpp"
@@ -45,6 +46,8 @@ std::string progressLine(const Time& time, double elapsed, double startTime) {
 SolverRun::SolverRun(const Arguments& args, std::string application)
     : application_(std::move(application)), case_(args.caseDir()), controlDict_(readControlDict(case_)) {
     Log::info(banner(application_, case_.root(), args.commandLine()));
+    // Before anything is read that another run could be writing; held until the run ends.
+    lock_ = std::make_unique<CaseLock>(case_.root(), application_);
     // Libraries first: their models must be selectable before anything is read.
     LibraryLoader::load(controlDict_, case_.root());
     time_ = std::make_unique<Time>(case_.systemFile("controlDict"), controlDict_);
@@ -62,15 +65,14 @@ SolverRun::SolverRun(const Arguments& args, std::string application)
                                                       case_.root().string() + " (run particleGen first?)");
     }
     startTimeName_ = start->name;
+    startDirectoryValue_ = start->value;
+    lastWritten_ = start->name;  // the start directory is input: never written, not even at the end
     const fs::path particleFile = case_.timeDir(start->name) / "particles.vtp";
     if (!fs::exists(particleFile)) throw InputError("cannot find " + particleFile.string());
     particles_ = std::move(readVtp(particleFile).particles);
     time_->start(start->value, start->name);
-    removeStaleTemporaries(case_.root());
-    // Results later than the start belong to an abandoned future: drop them from the index.
-    PvdIndex pvd = PvdIndex::read(case_.root() / "particles.pvd");
-    pvd.truncateAfter(start->value);
-    if (!pvd.entries().empty()) pvd.write();
+    // Read (and so checked) now; changed only in prepareOutputs, once the input is known good.
+    pvd_ = std::make_unique<PvdIndex>(PvdIndex::read(case_.root() / "particles.pvd"));
     if (fs::exists(case_.timeDir(start->name) / "state")) {
         state_ = Dictionary::read(case_.timeDir(start->name) / "state");
         time_->restore(*state_);
@@ -85,15 +87,67 @@ SolverRun::SolverRun(const Arguments& args, std::string application)
 
 SolverRun::~SolverRun() = default;
 
+void SolverRun::prepareOutputs() {
+    if (const std::size_t n = removeStaleTemporaries(case_.root()))
+        Log::info("Cleared " + std::to_string(n) + " temporaries left in " + case_.root().string() +
+                  " by killed runs");
+    // Later times were written by an earlier run that went on from another state (a longer run,
+    // or one before particleGen was rerun): startFrom latestTime would take them up, so they are
+    // moved aside, not deleted, and not left where they are.
+    std::vector<std::string> later;
+    std::set<std::string> laterSet;
+    for (const auto& t : case_.timeDirectories())
+        if (t.value > startDirectoryValue_ && t.name != startTimeName_) {
+            later.push_back(t.name);
+            laterSet.insert(t.name);
+        }
+    auto inLater = [&](const std::string& file) {
+        return laterSet.count(file.substr(0, file.find('/'))) > 0;
+    };
+    if (!later.empty()) {
+        const fs::path aside = moveAsideTimeDirectories(case_.root(), later);
+        // Their own index beside them, so the abandoned series still opens in ParaView.
+        PvdIndex abandoned(aside / "particles.pvd");
+        for (const auto& e : pvd_->entries())
+            if (inLater(e.file)) abandoned.add(e.time, e.file);
+        if (!abandoned.entries().empty()) abandoned.write();
+        std::string names;
+        for (const auto& n : later) names += " " + n;
+        Log::info("Moved " + std::to_string(later.size()) + " time directories later than the start time " +
+                  startTimeName_ + " (" + names.substr(1) + "), left by an earlier run, to " +
+                  aside.string() + "/");
+    }
+    // The index keeps what precedes the start's exact time (from its state on a restart: the
+    // directory name is rounded to writePrecision and may be below it) and nothing in a moved time.
+    PvdIndex pvd(pvd_->file());
+    bool listsStart = false;
+    for (const auto& e : pvd_->entries()) {
+        if (e.time > time_->value() || inLater(e.file)) continue;
+        pvd.add(e.time, e.file);
+        listsStart = listsStart || e.file == startTimeName_ + "/" + particleFileName;
+    }
+    if (!listsStart) pvd.add(time_->value(), startTimeName_ + "/" + particleFileName);
+    if (pvd.entries().size() != pvd_->entries().size() || !listsStart) pvd.write();
+    *pvd_ = std::move(pvd);
+}
+
 void SolverRun::write(Solver& solver) {
     Stopwatch watch;
     const Time& time = *time_;
+    if (time.timeName() == startTimeName_) {
+        char exact[32];
+        std::snprintf(exact, sizeof exact, "%.17g", time.value());
+        throw Error("the time " + std::string(exact) + " to write would be named '" + time.timeName() +
+                    "' at writePrecision " + std::to_string(time.writePrecision()) +
+                    ", the name of the start directory, which is input and is never overwritten: raise "
+                    "writePrecision in " +
+                    case_.systemFile("controlDict").string());
+    }
     std::string state = "// Restart state of " + application_ + " at time " + time.timeName() +
                         " (read by startFrom latestTime)\n" + time.state() + solver.solverState();
     writeTimeDirectory(case_.root(), time.timeName(), solver.particles(), {{"state", state}}, time.value());
-    PvdIndex pvd = PvdIndex::read(case_.root() / "particles.pvd");
-    pvd.add(time.value(), time.timeName() + "/particles.vtp");
-    pvd.write();
+    pvd_->add(time.value(), time.timeName() + "/" + particleFileName);
+    pvd_->write();
     lastWritten_ = time.timeName();
     time_->wrote();
     purge();
@@ -107,16 +161,16 @@ void SolverRun::purge() {
     // The initial conditions are never purged: they are the case's input, not a result.
     if (!times.empty() && times.front().name == "0") times.erase(times.begin());
     if (int(times.size()) <= keep) return;
-    const PvdIndex old = PvdIndex::read(case_.root() / "particles.pvd");
     std::set<std::string> removed;
     for (std::size_t k = 0; k + keep < times.size(); ++k) {
         removeTimeDirectory(case_.root(), times[k].name);
         removed.insert(times[k].name + "/" + particleFileName);
     }
-    PvdIndex pvd(old.file());
-    for (const auto& entry : old.entries())
+    PvdIndex pvd(pvd_->file());
+    for (const auto& entry : pvd_->entries())
         if (!removed.count(entry.file)) pvd.add(entry.time, entry.file);
     pvd.write();
+    *pvd_ = std::move(pvd);
 }
 
 void SolverRun::checkUnusedEntries(const Solver& solver) const {
@@ -140,6 +194,14 @@ void SolverRun::checkUnusedEntries(const Solver& solver) const {
 
 int SolverRun::run(Solver& solver) {
     Time& time = *time_;
+    // A restart of a finished run (startFrom latestTime at endTime): not an error, and nothing is
+    // written (no function-object rows, no summary) so the results stay as that run left them.
+    if (time.finished()) {
+        Log::info("Nothing to do: the run already reached endTime " + time.nameOf(time.endTime()) +
+                  " (start time " + time.timeName() + "); raise endTime in " +
+                  case_.systemFile("controlDict").string() + " to continue it\nEnd");
+        return 0;
+    }
     if (state_) solver.restoreSolverState(*state_);
     FunctionObjectList functions(controlDict_, solver);
     if (auto named = controlDict_.getOptional<std::string>("application"); named && *named != application_)
@@ -155,6 +217,8 @@ int SolverRun::run(Solver& solver) {
     for (const auto& e : controlDict_.defaultsUsed()) defaults += "\n    " + e;
     if (!defaults.empty()) Log::info("Defaults used:" + defaults);
 
+    // Everything is read and constructed: only now may earlier results change.
+    prepareOutputs();
     SignalHandler::install();
     setUpSeconds_ = clock_.seconds();
     Stopwatch stepping;
@@ -211,6 +275,8 @@ int SolverRun::run(Solver& solver) {
         }
     }
     if (!stopSignal && !stoppedByControl && lastWritten_ != time.timeName()) write(solver);
+    // A signal after the last step: the state is written all the same, and the status says so.
+    if (!stopSignal) stopSignal = SignalHandler::stopRequested();
     (void)startIndex;
     summary(solver, stepping.seconds(), startTime);
 
@@ -237,15 +303,22 @@ int SolverRun::run(Solver& solver) {
     }
     CsvFile csv(case_.postProcessing() / "runSummary" / startTimeName_ / "runSummary.csv",
                 {"time", "field", "L1", "L2", "Linf", "wallTime", "steps", "particles", "threads",
-                 "particleStepsPerSecond"});
+                 "particleStepsPerSecond"},
+                startTime);
     const double rate = wall > 0 ? double(n) * double(steps) / stepping.seconds() : 0;
     if (norms.empty())
         csv.row(time.value(), "none", {0, 0, 0, wall, double(steps), double(n), double(threadCount()), rate});
     for (const auto& e : norms)
         csv.row(e.time, e.source + "/" + e.field,
                 {e.L1, e.L2, e.Linf, wall, double(steps), double(n), double(threadCount()), rate});
-    Log::info(stopSignal ? "End (stopped by signal)" : "End");
-    return 0;
+    if (!stopSignal) {
+        Log::info("End");
+        return 0;
+    }
+    const int status = SignalHandler::exitStatus(stopSignal);
+    Log::info(std::string("End (stopped by ") + SignalHandler::name(stopSignal) + ", exit status " +
+              std::to_string(status) + ")");
+    return status;
 }
 
 void SolverRun::summary(const Solver& solver, double steppingSeconds, double startTime) {

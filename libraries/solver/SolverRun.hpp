@@ -9,6 +9,14 @@
 //     }
 //
 // where ParticleFlightSolver<Dim> is constructed from a SolverRun&.
+//
+// Earlier results are never touched before the input is known good. The constructor only reads
+// (controlDict, libraries, the start time's particles and state, particles.pvd) and takes the
+// case lock (core/CaseLock.hpp); the solver and its models are constructed next (runSolver);
+// run() constructs the function objects and checks for never-read entries, and only then
+// prepares the outputs: stale temporaries are swept, time directories later than the start are
+// moved into abandoned.<N>/ and particles.pvd is cut after the start's exact time. The start
+// directory is input and is never written.
 #include "core/Application.hpp"
 #include "core/Case.hpp"
 #include "core/Dictionary.hpp"
@@ -22,6 +30,8 @@
 
 namespace mfdyn {
 
+class CaseLock;
+class PvdIndex;
 class Solver;
 
 class SolverRun {
@@ -45,6 +55,7 @@ public:
     int run(Solver& solver);
 
 private:
+    void prepareOutputs();
     void write(Solver& solver);
     void purge();
     void checkUnusedEntries(const Solver& solver) const;
@@ -53,8 +64,13 @@ private:
     std::string application_;
     Case case_;
     Dictionary controlDict_;
+    std::unique_ptr<CaseLock> lock_;
     std::unique_ptr<Time> time_;
     std::string startTimeName_;
+    double startDirectoryValue_ = 0;  // the start directory's name as a number (not its exact time)
+    // particles.pvd, read once at start and rewritten (atomically) from memory at each write:
+    // re-reading it at every write would cost time quadratic in the number of writes.
+    std::unique_ptr<PvdIndex> pvd_;
     std::unique_ptr<ParticleSetBase> particles_;
     std::optional<Dictionary> state_;
     Stopwatch clock_;

@@ -1,6 +1,7 @@
 // particleGen: particles from system/particleGenDict, written to 0/particles.vtp.
 #include "core/Application.hpp"
 #include "core/Case.hpp"
+#include "core/CaseLock.hpp"
 #include "core/LibraryLoader.hpp"
 #include "core/Log.hpp"
 #include "geometry/ParticleGenerator.hpp"
@@ -16,6 +17,8 @@ int main(int argc, char** argv) {
         using namespace mfdyn;
         Case runCase(args.caseDir());
         Log::info(banner("particleGen", runCase.root(), args.commandLine()));
+        // 0/ and particles.pvd are rewritten: not under a solver that is running on the case.
+        const CaseLock lock(runCase.root(), "particleGen");
         const auto controlDictPath = runCase.systemFile("controlDict");
         if (std::filesystem::exists(controlDictPath))
             LibraryLoader::load(Dictionary::read(controlDictPath), runCase.root());
@@ -25,6 +28,15 @@ int main(int argc, char** argv) {
         for (const auto& u : dict.unusedEntries())
             Log::warning(u.where.str() + ": '" + u.scopedKey + "' was never read" +
                          (u.suggestion.empty() ? "" : " (did you mean '" + u.suggestion + "'?)"));
+        // Times computed from the previous 0/ no longer follow from it: moved aside, so that
+        // startFrom latestTime does not resume from them.
+        std::vector<std::string> later;
+        for (const auto& t : runCase.timeDirectories())
+            if (t.value > 0) later.push_back(t.name);
+        if (!later.empty())
+            Log::info("Moved " + std::to_string(later.size()) +
+                      " time directories computed from the previous initial conditions to " +
+                      moveAsideTimeDirectories(runCase.root(), later).string() + "/");
         writeTimeDirectory(runCase.root(), "0", *particles, {}, 0.0);
         PvdIndex pvd(runCase.root() / "particles.pvd");
         pvd.add(0.0, std::string("0/") + particleFileName);
