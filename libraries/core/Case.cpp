@@ -12,12 +12,18 @@ namespace mfdyn {
 namespace fs = std::filesystem;
 
 Case::Case(fs::path root) : root_(std::move(root)) {
-    if (!fs::is_directory(root_)) throw InputError("case directory '" + root_.string() + "' does not exist");
+    // Without std::error_code, a path the process may not look into threw filesystem_error
+    // ("Error (internal)"); a file given as the case is not missing, it is the wrong kind of thing.
+    std::error_code ec;
+    if (fs::is_directory(root_, ec)) return;
+    if (fs::exists(root_, ec)) throw InputError("case directory '" + root_.string() + "' is not a directory");
+    throw InputError("case directory '" + root_.string() + "' does not exist");
 }
 
 namespace {
 Dictionary readCaseFile(const fs::path& file) {
-    if (!fs::exists(file)) throw InputError("cannot find " + file.string());
+    std::error_code ec;
+    if (!fs::exists(file, ec)) throw InputError("cannot find " + file.string());
     return Dictionary::read(file);
 }
 }  // namespace

@@ -2,8 +2,11 @@
 // live in DictionaryParser.cpp (the only user of Boost.Spirit).
 #include "core/Dictionary.hpp"
 
+#include "core/MessageText.hpp"
+
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdlib>
 #include <limits>
 #include <type_traits>
@@ -240,10 +243,17 @@ const Entry* Dictionary::findEntry(std::string_view key) const {
 
 const Entry& Dictionary::entry(std::string_view key) const {
     if (const Entry* e = findEntry(key)) return *e;
-    const std::string guess = closestMatch(key, keys());
-    throw InputError(where_, name_,
-                     "missing keyword '" + std::string(key) + "'" +
-                         (guess.empty() ? std::string() : "; did you mean '" + guess + "'?"));
+    // A plausible typo among the keys nobody read or asked for ("intervall" for "interval"): one
+    // that was read or asked for is some other keyword.
+    std::vector<std::string> unread;
+    for (const auto& e : entries_)
+        if (!e->read && e->key != key && !asked_.count(e->key)) unread.push_back(e->key);
+    const std::string typo = closestMatch(key, unread);
+    throw InputError(
+        where_, name_,
+        "missing keyword '" + std::string(key) + "'" +
+            (typo.empty() ? std::string()
+                          : " (found '" + excerpt(typo) + "': did you mean '" + std::string(key) + "'?)"));
 }
 
 const Dictionary* Dictionary::findDict(std::string_view key) const {
@@ -379,27 +389,36 @@ InputError Dictionary::error(std::string_view key, const std::string& message) c
 
 namespace {
 
+// What an entry holds, quoted in a short excerpt: the value may be a whole file's worth of words.
 std::string describeValue(const Entry& e) {
     if (e.isDict()) return "a dictionary";
     if (e.tokens.empty()) return "an empty value";
     if (e.tokens.size() > 1)
-        return std::to_string(e.tokens.size()) + " values '" + joinTokens(e.tokens) + "'";
+        return std::to_string(e.tokens.size()) + " values '" + excerpt(joinTokens(e.tokens)) + "'";
     const Token& t = e.tokens.front();
     switch (t.kind) {
         case Token::Kind::word:
-            return "the word '" + t.text + "'";
+            return "the word '" + excerpt(t.text) + "'";
         case Token::Kind::string:
-            return "the string " + t.str();
+            return "the string " + excerpt(t.str());
         case Token::Kind::integer:
-            return "the integer " + t.str();
+            return "the integer " + excerpt(t.str());
         case Token::Kind::real:
-            return "the real " + t.str();
+            return "the real " + excerpt(t.str());
         case Token::Kind::list:
             return "a list of " + std::to_string(t.list.size()) + " items";
         case Token::Kind::dictionary:
             return "a dictionary";
     }
     return "?";
+}
+
+// "inf", "-Infinity", "nan": the spellings strtod would read as a non-finite number.
+bool isNonFiniteWord(std::string_view w) {
+    if (!w.empty() && (w.front() == '+' || w.front() == '-')) w.remove_prefix(1);
+    std::string lower;
+    for (char c : w) lower += char(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
+    return lower == "inf" || lower == "infinity" || lower.rfind("nan", 0) == 0;
 }
 
 [[noreturn]] void typeError(const Entry& e, const Dictionary& scope, const std::string& expected,
@@ -495,7 +514,19 @@ std::string ValueTraits<std::string>::convert(const Entry& e, const Dictionary& 
 template <>
 double ValueTraits<double>::convert(const Entry& e, const Dictionary& scope) {
     const Token& t = single(e, scope, describe());
-    if (!t.isNumber()) typeError(e, scope, describe(), describeValue(e));
+    // The parser reads no inf or nan (they are words; 1e999 is out of range), so a non-finite
+    // number can only come from a token built in code; no caller reads one on purpose (a bound
+    // such as "no limit" is an optional keyword, not inf), so it is refused here as well.
+    if (!t.isNumber()) {
+        const bool nonFinite =
+            t.kind == Token::Kind::word || t.kind == Token::Kind::string ? isNonFiniteWord(t.text) : false;
+        typeError(
+            e, scope, describe(),
+            describeValue(e) + (nonFinite ? " (infinite and not-a-number values are not accepted)" : ""));
+    }
+    if (!std::isfinite(t.number()))
+        typeError(e, scope, describe(),
+                  "a non-finite value (infinite and not-a-number values are not accepted)");
     return t.number();
 }
 
@@ -538,7 +569,14 @@ template <>
 std::vector<double> ValueTraits<std::vector<double>>::convert(const Entry& e, const Dictionary& scope) {
     std::vector<double> v;
     for (const Token& t : listValue(e, scope, describe())) {
-        if (!t.isNumber()) typeError(e, scope, describe(), "the item '" + t.str() + "'");
+        if (!t.isNumber())
+            typeError(
+                e, scope, describe(),
+                "the item '" + excerpt(t.str()) + "'" +
+                    (isNonFiniteWord(t.text) ? " (infinite and not-a-number values are not accepted)" : ""));
+        if (!std::isfinite(t.number()))
+            typeError(e, scope, describe(),
+                      "a non-finite item (infinite and not-a-number values are not accepted)");
         v.push_back(t.number());
     }
     return v;
@@ -550,7 +588,7 @@ std::vector<int> ValueTraits<std::vector<int>>::convert(const Entry& e, const Di
     for (const Token& t : listValue(e, scope, describe())) {
         if (t.kind != Token::Kind::integer || t.integer < std::numeric_limits<int>::min() ||
             t.integer > std::numeric_limits<int>::max())
-            typeError(e, scope, describe(), "the item '" + t.str() + "'");
+            typeError(e, scope, describe(), "the item '" + excerpt(t.str()) + "'");
         v.push_back(int(t.integer));
     }
     return v;
@@ -562,7 +600,7 @@ std::vector<std::string> ValueTraits<std::vector<std::string>>::convert(const En
     std::vector<std::string> v;
     for (const Token& t : listValue(e, scope, describe())) {
         if (t.kind != Token::Kind::word && t.kind != Token::Kind::string)
-            typeError(e, scope, describe(), "the item '" + t.str() + "'");
+            typeError(e, scope, describe(), "the item '" + excerpt(t.str()) + "'");
         v.push_back(t.text);
     }
     return v;

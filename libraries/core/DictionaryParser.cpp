@@ -8,11 +8,14 @@
 // points; the grammar is LL(1) (the first character decides every alternative), so the semantic
 // actions that grow the AST never run on a branch that is later abandoned.
 #include "core/Dictionary.hpp"
+#include "core/MessageText.hpp"
 
 #include <algorithm>
 #include <boost/spirit/home/x3.hpp>
 #include <charconv>
+#include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace mfdyn {
@@ -52,7 +55,20 @@ struct AstDict {
 };
 
 // Too deep a nesting would exhaust the stack of the recursive-descent parser long before memory.
+// The builder applies the same limit across included files and $macro values, whose copies and
+// printing recurse as deep.
 constexpr std::size_t maxNesting = 200;
+
+// Each #include is a level of the builder's recursion, with the included file's text and syntax
+// tree held until it is done: a chain of 12 800 files overflowed the stack. Real cases include a
+// few files deep.
+constexpr std::size_t maxIncludeDepth = 64;
+
+// The values (tokens and entries) that $macro expansion may copy in one read, included files
+// counted. `b ($a $a); c ($b $b); ...` doubles at every line: 40 lines would copy 2^40 values
+// (a hang, then std::bad_alloc). A million is far more than a case copies (a table of 10^5 rows
+// of a time and a vector, used twice, is 10^6) and costs a few hundred MB at most.
+constexpr std::size_t maxMacroValues = 1000000;
 
 struct NestingTooDeep {
     std::size_t offset;
@@ -471,8 +487,9 @@ std::string foundAt(const std::string& text, std::size_t offset) {
         return std::string("'") + char(c) + "'";
     }
     std::size_t end = offset;
-    while (end < text.size() && isWordByte(static_cast<unsigned char>(text[end])) && end - offset < 40) ++end;
-    return "'" + text.substr(offset, end - offset) + "'";
+    while (end < text.size() && isWordByte(static_cast<unsigned char>(text[end])) && end - offset <= 40)
+        ++end;
+    return "'" + excerpt(std::string_view(text).substr(offset, end - offset), 40) + "'";
 }
 
 [[noreturn]] void fail(const Source& src, std::size_t offset, const std::string& message) {
@@ -516,7 +533,7 @@ std::size_t skipBlanks(const std::string& text, std::size_t offset) {
         std::size_t b = where, e = where;
         while (b > 0 && isWordByte(static_cast<unsigned char>(text[b - 1]))) --b;
         while (e < text.size() && isWordByte(static_cast<unsigned char>(text[e]))) ++e;
-        const std::string spelling = text.substr(b, e - b);
+        const std::string spelling = excerpt(std::string_view(text).substr(b, e - b), 40);
         fail(src, b,
              "bad number '" + spelling + "': " +
                  (which == "exponent" ? std::string("expected digits after the exponent")
@@ -527,14 +544,15 @@ std::size_t skipBlanks(const std::string& text, std::size_t offset) {
         std::size_t e = where;
         while (e < text.size() && isWordByte(static_cast<unsigned char>(text[e]))) ++e;
         fail(src, where - 1,
-             "unknown directive '#" + text.substr(where, e - where) + "': expected #include or #includeEtc");
+             "unknown directive '#" + excerpt(std::string_view(text).substr(where, e - where), 40) +
+                 "': expected #include or #includeEtc");
     }
     if (which == "a quoted file name")
         fail(src, where, "expected a quoted file name after the directive, found " + found);
     if (at == ';' && (which == "'}'" || which == "end of input"))
         fail(src, where, "expected a keyword before ';' (empty keyword)");
     if (which == "';'") {
-        const std::string key = inner ? inner->key : std::string();
+        const std::string key = inner ? excerpt(inner->key) : std::string();
         fail(src, where, "expected ';' after the value of '" + key + "', found " + found);
     }
     if (which == "')'") {
@@ -543,8 +561,8 @@ std::size_t skipBlanks(const std::string& text, std::size_t offset) {
                  ", found " + found);
     }
     if (which == "'}'") {
-        const std::string what =
-            inner && !inner->key.empty() ? "dictionary '" + inner->key + "'" : std::string("dictionary");
+        const std::string what = inner && !inner->key.empty() ? "dictionary '" + excerpt(inner->key) + "'"
+                                                              : std::string("dictionary");
         const std::string opened = src.lineColumn(inner ? inner->offset : 0);
         if (where >= text.size())
             fail(src, where,
@@ -581,9 +599,19 @@ std::unique_ptr<AstDict> parseSyntax(const Source& src) {
 // ------------------------------------------------------------------------------------------
 // Builder: AST to Dictionary, with includes and macros expanded in order.
 
+// Larger than any dictionary: a file this size is not one (a particle file or a disk image named
+// by mistake), and reading it whole would end in std::bad_alloc rather than a message.
+constexpr std::uintmax_t maxFileBytes = std::uintmax_t(1) << 30;
+
 std::string readFile(const fs::path& path) {
+    std::error_code ec;
+    const std::uintmax_t bytes = fs::file_size(path, ec);
+    if (!ec && bytes > maxFileBytes)
+        throw InputError("file '" + excerpt(path.string(), 200) + "' is " + std::to_string(bytes) +
+                         " bytes, more than the " + std::to_string(maxFileBytes) +
+                         " a dictionary may have: is it a dictionary?");
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError("cannot open file '" + path.string() + "'");
+    if (!in) throw InputError("cannot open file '" + excerpt(path.string(), 200) + "'");
     std::ostringstream s;
     s << in.rdbuf();
     return s.str();
@@ -591,6 +619,39 @@ std::string readFile(const fs::path& path) {
 
 std::string joinScope(const std::string& scope, const std::string& key) {
     return scope.empty() ? key : scope + "/" + key;
+}
+
+fs::path canonicalOrSame(const fs::path& p) {
+    std::error_code ec;
+    fs::path c = fs::weakly_canonical(p, ec);
+    return ec ? p : c;
+}
+
+// True when `path` names `root` or something below it (both canonical).
+bool isInside(const fs::path& path, const fs::path& root) {
+    const fs::path rel = path.lexically_relative(root);
+    return !rel.empty() && *rel.begin() != "..";
+}
+
+// The number `a` as written, read by std::from_chars: no locale, no exception. A value beyond the
+// range of a double is an error, not inf or 0, which would pass on a number the user did not write
+// (1e999 as inf, 1e-400 as 0, both of which bounds such as "> 0" then judge wrongly). Subnormal
+// values (5e-321) are doubles like any other and read as their value: refusing them would refuse
+// valid input, and the digits kept are the nearest a double holds, as for every other number.
+double readReal(const Source& src, const AstToken& a) {
+    const char* b = a.text.data();
+    const char* const e = b + a.text.size();
+    if (b != e && *b == '+') ++b;  // from_chars takes no '+'
+    double v = 0.0;
+    const auto r = std::from_chars(b, e, v);
+    if (r.ec == std::errc::result_out_of_range)
+        fail(src, a.begin,
+             "number '" + excerpt(a.text, 40) +
+                 "' is out of range: a real must lie between about 4.9e-324 and 1.8e+308 in magnitude, or be "
+                 "0");
+    if (r.ec != std::errc() || r.ptr != e || !std::isfinite(v))
+        fail(src, a.begin, "bad number '" + excerpt(a.text, 40) + "'");
+    return v;
 }
 
 class Builder {
@@ -602,7 +663,14 @@ public:
         buildStatements(src, *ast, target, included);
     }
 
-    std::vector<fs::path> chain;  // files being read, outermost first, for include loops
+    // The file Dictionary::parse reads, the first link of the include chain (so that a file that
+    // includes itself is a loop).
+    void openTopLevel(const std::string& fileName) {
+        if (fileName.empty()) return;
+        const fs::path canonical = canonicalOrSame(fileName);
+        chain_.push_back({canonical, {}});
+        open_.insert(canonical);
+    }
 
     void buildStatements(const Source& src, const AstDict& ast, Dictionary& dict, bool included) {
         std::map<std::string, SourceLocation, std::less<>> literal;  // keys written in this block
@@ -614,7 +682,8 @@ public:
                     const SourceLocation where = src.at(s.begin);
                     if (auto it = literal.find(s.key); it != literal.end()) {
                         fail(src, s.begin,
-                             "duplicate keyword '" + s.key + "': first defined at " + it->second.str());
+                             "duplicate keyword '" + excerpt(s.key) + "': first defined at " +
+                                 it->second.str());
                     }
                     literal.emplace(s.key, where);
                     auto e = std::make_unique<Entry>();
@@ -626,7 +695,10 @@ public:
                     if (s.kind == AstStatement::Kind::dictEntry) {
                         e->dict = makeDict(src, *s.dict, dict, s.key, where, included);
                     } else {
-                        e->tokens = expand(src, s.tokens, dict, s.key);
+                        {
+                            const Deeper value(*this, src, s.begin);  // the grammar's level of a value
+                            e->tokens = expand(src, s.tokens, dict, s.key);
+                        }
                         // `b $a;` with `a` a dictionary makes `b` a dictionary too.
                         if (e->tokens.size() == 1 && e->tokens.front().kind == Token::Kind::dictionary &&
                             s.tokens.size() == 1 && s.tokens.front().kind == AstToken::Kind::macro) {
@@ -647,7 +719,8 @@ public:
                     const Entry* ref = findMacro(src, s.key, s.begin, dict);
                     if (!ref->isDict())
                         fail(src, s.begin,
-                             "'$" + s.key + "' is not a dictionary, so it cannot stand as an entry");
+                             "'$" + excerpt(s.key) + "' is not a dictionary, so it cannot stand as an entry");
+                    chargeMacro(src, s.begin, s.key, *ref, true);
                     for (const auto& sub : ref->dict->entries()) {
                         auto copy = sub->clone();
                         copy->fromInclude = true;
@@ -660,9 +733,28 @@ public:
     }
 
 private:
+    // One level deeper (a dictionary or a list), for as long as it lives; refused beyond maxNesting.
+    class Deeper {
+    public:
+        Deeper(Builder& builder, const Source& src, std::size_t at) : builder_(builder) {
+            if (builder_.depth_ >= maxNesting)
+                fail(src, at,
+                     "nesting deeper than " + std::to_string(maxNesting) +
+                         " levels (dictionaries and lists, counted through included files)");
+            ++builder_.depth_;
+        }
+        ~Deeper() { --builder_.depth_; }
+        Deeper(const Deeper&) = delete;
+        Deeper& operator=(const Deeper&) = delete;
+
+    private:
+        Builder& builder_;
+    };
+
     std::unique_ptr<Dictionary> makeDict(const Source& src, const AstDict& ast, const Dictionary& parent,
                                          const std::string& name, const SourceLocation& where,
                                          bool included) {
+        const Deeper deeper(*this, src, ast.open);
         auto d = std::make_unique<Dictionary>();
         d->setScope(joinScope(parent.scope(), name), &parent);
         d->setWhere(where);
@@ -694,55 +786,112 @@ private:
     }
     static void insertMerged(Dictionary& dict, std::unique_ptr<Entry> e) { insert(dict, std::move(e)); }
 
+    // The file an #includeEtc names, found only inside the etc directories: a name with a root
+    // or a '..' component is refused before any look-up, and a file found is refused when its real
+    // path (symbolic links followed) leaves the directory it was found in. Otherwise
+    // `#includeEtc "../../../../etc/passwd"` read any file the user may read, and its first line
+    // came back in the parse error.
+    fs::path findEtc(const Source& src, std::size_t at, const std::string& name) const {
+        const auto dirs = options_.etcDirectories.empty() ? etcDirectories() : options_.etcDirectories;
+        std::string searched;
+        for (const auto& d : dirs) searched += (searched.empty() ? "" : ", ") + excerpt(d.string(), 200);
+        if (searched.empty()) searched = "any etc directory (none configured)";
+        const std::string directive = "#includeEtc \"" + excerpt(name, 200) + "\"";
+        const fs::path rel(name);
+        if (name.empty())
+            fail(src, at,
+                 directive + ": expected the name of a file in the etc directories (" + searched + ")");
+        if (rel.has_root_path())
+            fail(src, at,
+                 directive +
+                     ": an absolute path; #includeEtc takes a name relative to the etc directories (" +
+                     searched + "), #include takes any file");
+        for (const auto& part : rel)
+            if (part == "..")
+                fail(src, at,
+                     directive +
+                         ": a '..' component; #includeEtc reads only files inside the etc directories (" +
+                         searched + ")");
+        for (const auto& d : dirs) {
+            std::error_code ec;
+            const fs::path candidate = d / rel;
+            if (!fs::is_regular_file(candidate, ec)) continue;
+            const fs::path real = canonicalOrSame(candidate);
+            if (!isInside(real, canonicalOrSame(d)))
+                fail(src, at,
+                     directive + ": found as '" + excerpt(candidate.string(), 200) + "', which leads to '" +
+                         excerpt(real.string(), 200) + "', outside the etc directory '" +
+                         excerpt(d.string(), 200) + "'");
+            return candidate;
+        }
+        fail(src, at, directive + ": not found in " + searched);
+    }
+
+    // "a:3 -> b:1 -> ... (58 more) -> c:1": where each open include was written, outermost first.
+    std::string chainText() const {
+        std::vector<std::string> links;
+        for (const Link& l : chain_)
+            if (l.includedAt.known())
+                links.push_back(excerpt(*l.includedAt.file, 200) + ":" + std::to_string(l.includedAt.line));
+        constexpr std::size_t head = 4, tail = 2;
+        std::string s;
+        for (std::size_t i = 0; i < links.size(); ++i) {
+            if (i == head && links.size() > head + tail + 1) {
+                s += " -> ... (" + std::to_string(links.size() - head - tail) + " more)";
+                i = links.size() - tail - 1;
+                continue;
+            }
+            s += (s.empty() ? "" : " -> ") + links[i];
+        }
+        return s;
+    }
+
     void include(const Source& src, const AstStatement& s, Dictionary& dict) {
         const bool etc = s.kind == AstStatement::Kind::includeEtc;
         const std::string name = s.tokens.empty() ? std::string() : s.tokens.front().text;
         const std::size_t at = s.begin;
         fs::path path;
         if (etc) {
-            const auto dirs = options_.etcDirectories.empty() ? etcDirectories() : options_.etcDirectories;
-            std::string searched;
-            for (const auto& d : dirs) {
-                std::error_code ec;
-                if (fs::is_regular_file(d / name, ec)) {
-                    path = d / name;
-                    break;
-                }
-                searched += (searched.empty() ? "" : ", ") + d.string();
-            }
-            if (path.empty())
-                fail(src, at,
-                     "#includeEtc \"" + name + "\": not found in " +
-                         (searched.empty() ? std::string("any etc directory (none configured)") : searched));
+            path = findEtc(src, at, name);
         } else {
             path = fs::path(name);
             if (path.is_relative()) path = src.directory / path;
             std::error_code ec;
             if (!fs::is_regular_file(path, ec))
-                fail(src, at, "#include \"" + name + "\": cannot open file '" + path.string() + "'");
+                fail(src, at,
+                     "#include \"" + excerpt(name, 200) + "\": cannot open file '" +
+                         excerpt(path.string(), 200) + "'");
         }
-        std::error_code ec;
-        fs::path canonical = fs::weakly_canonical(path, ec);
-        if (ec) canonical = path;
-        if (std::find(chain.begin(), chain.end(), canonical) != chain.end()) {
+        const fs::path canonical = canonicalOrSame(path);
+        if (open_.count(canonical)) {
             std::string loop;
             bool inLoop = false;
-            for (const auto& f : chain) {
-                if (f == canonical) inLoop = true;
-                if (inLoop) loop += f.string() + " -> ";
+            for (const Link& l : chain_) {
+                if (l.file == canonical) inLoop = true;
+                if (inLoop) loop += excerpt(l.file.string(), 200) + " -> ";
             }
-            fail(src, at, "include loop: " + loop + canonical.string());
+            fail(src, at, "include loop: " + loop + excerpt(canonical.string(), 200));
+        }
+        if (includeDepth_ >= maxIncludeDepth) {
+            chain_.push_back({canonical, src.at(at)});  // this directive, the last link shown
+            fail(src, at,
+                 "included files nested deeper than " + std::to_string(maxIncludeDepth) +
+                     " (an include chain that never ends?): " + chainText());
         }
         std::string text;
         try {
             text = readFile(path);
-        } catch (const InputError&) {
-            fail(src, at, "cannot read included file '" + path.string() + "'");
+        } catch (const InputError& e) {
+            fail(src, at, "cannot read included file '" + excerpt(path.string(), 200) + "': " + e.what());
         }
-        chain.push_back(canonical);
+        chain_.push_back({canonical, src.at(at)});
+        open_.insert(canonical);
+        ++includeDepth_;
         const Source inner(path.string(), std::move(text));
         buildFile(inner, dict, true);
-        chain.pop_back();
+        --includeDepth_;
+        open_.erase(canonical);
+        chain_.pop_back();
     }
 
     static const Entry* lookupScoped(const Dictionary& start, std::string_view name) {
@@ -780,12 +929,62 @@ private:
                 for (const auto& k : d->keys()) visible.push_back(k);
             const std::string guess = closestMatch(n, visible);
             fail(src, at,
-                 "undefined macro '$" + name + "'" +
+                 "undefined macro '$" + excerpt(name) + "'" +
                      (guess.empty() ? std::string(" (only entries defined before it can be used)")
-                                    : "; did you mean '$" + guess + "'?"));
+                                    : "; did you mean '$" + excerpt(guess) + "'?"));
         }
         e->read = true;  // a value used through a macro counts as used
         return e;
+    }
+
+    // What a value holds: its tokens and entries, all levels, and how many levels it opens below
+    // the place it stands, counted as the grammar counts them: a list, a dictionary and the value
+    // of an entry are one level each (so that whatever is read prints as text that reads again).
+    struct Size {
+        std::size_t values = 0, depth = 0;
+        void add(const Size& inner, std::size_t levels) {
+            values += inner.values;
+            depth = std::max(depth, inner.depth + levels);
+        }
+    };
+    static Size measure(const std::vector<Token>& tokens) {
+        Size s;
+        for (const Token& t : tokens) {
+            ++s.values;
+            if (t.kind == Token::Kind::list) s.add(measure(t.list), 1);
+            if (t.dict) s.add(measureBody(*t.dict), 1);
+        }
+        return s;
+    }
+    static Size measureBody(const Dictionary& dict) {
+        Size s;
+        for (const auto& e : dict.entries()) {
+            ++s.values;
+            s.add(e->isDict() ? measureBody(*e->dict) : measure(e->tokens), 1);
+        }
+        return s;
+    }
+
+    // Counts the values a use of `$name` copies, and refuses the copy beyond maxMacroValues in
+    // this read or beyond maxNesting levels at the place of use (each `b ($a)` nests one more).
+    // `merged`: the entries of a dictionary `$name;` go into the current dictionary, not below it.
+    void chargeMacro(const Source& src, std::size_t at, const std::string& name, const Entry& e,
+                     bool merged) {
+        const Size size = e.isDict() ? measureBody(*e.dict) : measure(e.tokens);
+        const std::size_t reach = depth_ + size.depth + (e.isDict() && !merged ? 1 : 0);
+        if (reach > maxNesting)
+            fail(src, at,
+                 "nesting deeper than " + std::to_string(maxNesting) + " levels: the value of '$" +
+                     excerpt(name) + "' would reach " + std::to_string(reach) + " here");
+        macroValues_ += size.values;
+        if (macroValues_ > maxMacroValues)
+            fail(
+                src, at,
+                "expanding '$" + excerpt(name) + "' (" + std::to_string(size.values) +
+                    " values) takes the values copied by macros in this dictionary and its includes past the "
+                    "limit of " +
+                    std::to_string(maxMacroValues) +
+                    " (does each macro repeat the one before, as in 'b ($a $a); c ($b $b);'?)");
     }
 
     std::vector<Token> expand(const Source& src, const std::vector<AstToken>& in, Dictionary& dict,
@@ -804,7 +1003,7 @@ private:
                     const auto r = std::from_chars(b, a.text.data() + a.text.size(), t.integer);
                     if (r.ec != std::errc()) {  // too long for 64 bits: keep it as a real
                         t.kind = Token::Kind::real;
-                        t.real = std::strtod(a.text.c_str(), nullptr);
+                        t.real = readReal(src, a);
                     } else {
                         t.real = double(t.integer);
                     }
@@ -813,7 +1012,7 @@ private:
                 case AstToken::Kind::real:
                     t.kind = Token::Kind::real;
                     t.text = a.text;
-                    t.real = std::strtod(a.text.c_str(), nullptr);
+                    t.real = readReal(src, a);
                     break;
                 case AstToken::Kind::word:
                     t.kind = Token::Kind::word;
@@ -825,6 +1024,7 @@ private:
                     break;
                 case AstToken::Kind::macro: {
                     const Entry* e = findMacro(src, a.text, a.begin, dict);
+                    chargeMacro(src, a.begin, a.text, *e, false);
                     if (e->isDict()) {
                         t.kind = Token::Kind::dictionary;
                         t.dict = std::make_shared<Dictionary>(*e->dict);
@@ -840,10 +1040,12 @@ private:
                     }
                     continue;
                 }
-                case AstToken::Kind::list:
+                case AstToken::Kind::list: {
+                    const Deeper deeper(*this, src, a.begin);
                     t.kind = Token::Kind::list;
                     t.list = expand(src, a.list, dict, key);
                     break;
+                }
                 case AstToken::Kind::dict:
                     t.kind = Token::Kind::dictionary;
                     t.dict =
@@ -855,14 +1057,17 @@ private:
         return out;
     }
 
+    struct Link {
+        fs::path file;              // canonical
+        SourceLocation includedAt;  // the directive that opened it; unknown for the top-level file
+    };
     const ReadOptions& options_;
+    std::vector<Link> chain_;  // files being read, outermost first, for messages
+    std::set<fs::path> open_;  // the same files, for the loop check (a scan of chain_ was quadratic)
+    std::size_t includeDepth_ = 0;
+    std::size_t depth_ = 0;        // dictionaries and lists open, across included files
+    std::size_t macroValues_ = 0;  // values copied by $macro expansion so far
 };
-
-fs::path canonicalOrSame(const fs::path& p) {
-    std::error_code ec;
-    fs::path c = fs::weakly_canonical(p, ec);
-    return ec ? p : c;
-}
 
 }  // namespace
 
@@ -872,7 +1077,7 @@ Dictionary Dictionary::parse(std::string_view text, const std::string& fileName,
     dict.setWhere(src.at(0));
     dict.closeBraceOffset = text.size();
     Builder builder(options);
-    if (!fileName.empty()) builder.chain.push_back(canonicalOrSame(fileName));
+    builder.openTopLevel(fileName);
     builder.buildFile(src, dict, false);
     return dict;
 }
@@ -880,7 +1085,7 @@ Dictionary Dictionary::parse(std::string_view text, const std::string& fileName,
 Dictionary Dictionary::read(const std::filesystem::path& file, const ReadOptions& options) {
     std::error_code ec;
     if (!fs::is_regular_file(file, ec))
-        throw InputError("cannot open dictionary file '" + file.string() + "'");
+        throw InputError("cannot open dictionary file '" + excerpt(file.string(), 200) + "'");
     return parse(readFile(file), file.string(), options);
 }
 
@@ -896,8 +1101,7 @@ void Dictionary::set(std::string_view key, std::string_view valueText) {
     const Source src("value of '" + std::string(key) + "'", std::move(text));
     const auto ast = parseSyntax(src);
     if (ast->statements.size() != 1 || ast->statements.front().key != key)
-        throw InputError(where_, name_,
-                         "cannot set '" + std::string(key) + "' to '" + std::string(valueText) + "'");
+        throw InputError(where_, name_, "cannot set '" + excerpt(key) + "' to '" + excerpt(valueText) + "'");
     Dictionary scratch;
     scratch.setScope(name_, this);
     ReadOptions options;

@@ -2,10 +2,11 @@
 
 #include "core/Dictionary.hpp"
 #include "core/Log.hpp"
+#include "core/MessageText.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 namespace mfdyn {
@@ -35,15 +36,21 @@ bool inside(const Keyword& k, double v) {
 }  // namespace
 
 std::string formatKeywordNumber(double value) {
-    std::string text;
+    // %g style with the fewest digits (6 at least) that read back as `value`, so that the value
+    // shown is the value read: 1e-320 is "9.99989e-321", not "0.000000". std::to_chars and
+    // std::from_chars neither throw (std::stod threw out_of_range for a subnormal, which reached
+    // the user as "Error (internal): stod") nor depend on the locale.
+    char text[64];
+    std::string shown;
     for (int precision = 6; precision <= 17; ++precision) {
-        std::ostringstream out;
-        out.precision(precision);
-        out << value;
-        text = out.str();
-        if (!std::isfinite(value) || std::stod(text) == value) break;
+        const auto written =
+            std::to_chars(text, text + sizeof text, value, std::chars_format::general, precision);
+        shown.assign(text, written.ptr);
+        double back = 0.0;
+        const auto read = std::from_chars(text, written.ptr, back);
+        if (!std::isfinite(value) || (read.ec == std::errc() && back == value)) break;
     }
-    return text;
+    return shown;
 }
 
 // ------------------------------------------------------------------------------------------
@@ -358,6 +365,14 @@ std::string KeywordSchema::summary(const std::string& indent) const {
 // Reading
 
 KeywordValues KeywordSchema::read(const Dictionary& dict) const {
+    // A key given for a missing keyword `name` that is a plausible typo of it: unread, and not
+    // another keyword of this schema (`interval` missing and `intervall` given).
+    const auto misspelt = [this](const Dictionary& in, const std::string& name) {
+        std::vector<std::string> unread;
+        for (const auto& e : in.entries())
+            if (!e->read && !find(e->key)) unread.push_back(e->key);
+        return closestMatch(name, unread);
+    };
     KeywordValues out;
     out.dict_ = &dict;
     out.model_ = family_ + " " + type_;
@@ -379,6 +394,8 @@ KeywordValues KeywordSchema::read(const Dictionary& dict) const {
                 if (k.orEnclosing && dict.parent())
                     message += "; looked for in '" + dict.scope() + "' and in the enclosing '" +
                                dict.parent()->scope() + "'";
+                if (const std::string typo = misspelt(dict, k.name); !typo.empty())
+                    message += " (found '" + excerpt(typo) + "': did you mean '" + k.name + "'?)";
                 throw InputError(dict.where(), dict.scope(), message);
             }
             if (k.kind == Keyword::Kind::defaulted) {
@@ -433,8 +450,8 @@ KeywordValues KeywordSchema::read(const Dictionary& dict) const {
                 for (const auto& w : k.words) valid = valid || w == v.text;
                 if (!valid) {
                     const std::string guess = closestMatch(v.text, k.words);
-                    throw from.error(k.name, "expected one of " + joinWords(k.words) + ", found '" + v.text +
-                                                 "'" +
+                    throw from.error(k.name, "expected one of " + joinWords(k.words) + ", found '" +
+                                                 excerpt(v.text) + "'" +
                                                  (guess.empty() ? "" : "; did you mean '" + guess + "'?"));
                 }
                 break;

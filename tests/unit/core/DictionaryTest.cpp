@@ -2,12 +2,17 @@
 // leading comments), then typed look-up, tracking, editing and copying.
 #include "core/Dictionary.hpp"
 
+#include "core/Case.hpp"
+#include "core/MessageText.hpp"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
+#include <functional>
+#include <limits>
 #include <sstream>
 
 #include <unistd.h>
@@ -223,7 +228,7 @@ TEST(DictionaryLookup, missingKeyNamesScopeAndSuggests) {
         FAIL();
     } catch (const InputError& e) {
         const std::string m = e.what();
-        EXPECT_NE(m.find("sample:11:1: in 'eos': missing keyword 'c00'; did you mean 'c0'?"),
+        EXPECT_NE(m.find("sample:11:1: in 'eos': missing keyword 'c00' (found 'c0': did you mean 'c00'?)"),
                   std::string::npos)
             << m;
     }
@@ -447,3 +452,253 @@ TEST(DictionaryLimits, deepNestingIsAnErrorNotACrash) {
 }
 
 }  // namespace
+
+// ------------------------------------------------------------------------------------------
+// Hardening (issue 14): limits that turn hostile or broken input into a message, not a crash,
+// a hang or a leak of another file's contents.
+
+namespace {
+
+std::string errorOf(const std::function<void()>& f) {
+    try {
+        f();
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "no InputError";
+}
+
+bool has(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// A fresh directory under the temporary directory, removed at the end of the test.
+struct TempDir {
+    fs::path path;
+    explicit TempDir(const std::string& name)
+        : path(fs::temp_directory_path() / (name + std::to_string(::getpid()))) {
+        fs::remove_all(path);
+        fs::create_directories(path);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+};
+
+}  // namespace
+
+// 12 800 nested includes overflowed the stack. 20 000 files, each including the next, must end in
+// the include-depth error at the 65th, naming the directives at the top of the chain, quickly.
+TEST(DictionaryLimits, endlessIncludeChainIsAnErrorNotACrash) {
+    TempDir dir("mfdynIncludeChain");
+    constexpr int files = 20000;
+    for (int i = 0; i < files; ++i)
+        std::ofstream(dir.path / ("f" + std::to_string(i)))
+            << "a" << i << " " << i << ";\n#include \"f" << (i + 1) << "\"\n";
+    const auto start = std::chrono::steady_clock::now();
+    const std::string what = errorOf([&] { Dictionary::read(dir.path / "f0"); });
+    const double seconds = secondsSince(start);
+    const std::string f = (dir.path / "f").string();
+    // The 65th file's directive is refused: f64 is the 65th file, its line 2 includes f65.
+    EXPECT_TRUE(has(what, f + "64:2:1: included files nested deeper than 64")) << what;
+    // The top of the chain: the first directives, then how many are left out, then the last.
+    EXPECT_TRUE(has(what, f + "0:2 -> " + f + "1:2 -> " + f + "2:2 -> " + f + "3:2 -> ... (59 more) -> " + f +
+                              "63:2 -> " + f + "64:2"))
+        << what;
+    EXPECT_LT(what.size(), 2000u) << "the chain is shortened, not listed whole";
+    EXPECT_LT(seconds, 2.0);
+    std::cout << "include chain refused in " << seconds << " s\n";
+
+    // 64 levels still read: f0 .. f64 with f64 ending the chain.
+    std::ofstream(dir.path / "f64") << "a64 64;\n";
+    const Dictionary d = Dictionary::read(dir.path / "f0");
+    EXPECT_EQ(d.get<int>("a64"), 64);
+    EXPECT_EQ(d.peek("a64")->where.str(), f + "64:1:1");
+}
+
+// The loop check is a set look-up now; a loop must still be reported as a loop, with its files.
+TEST(DictionaryLimits, includeLoopIsReportedWithItsFiles) {
+    TempDir dir("mfdynIncludeLoop");
+    std::ofstream(dir.path / "a") << "x 1;\n#include \"b\"\n";
+    std::ofstream(dir.path / "b") << "y 2;\n\n#include \"a\"\n";
+    const std::string a = fs::canonical(dir.path / "a").string(), b = fs::canonical(dir.path / "b").string();
+    const std::string what = errorOf([&] { Dictionary::read(dir.path / "a"); });
+    EXPECT_TRUE(has(what, (dir.path / "b").string() + ":3:1: include loop: " + a + " -> " + b + " -> " + a))
+        << what;
+}
+
+// `a 1 2; b ($a $a); c ($b $b); ...`: 40 lines would copy 2^40 values (a hang, then
+// std::bad_alloc). The copy is refused once a million values have been copied, at the macro that
+// went past the limit, in well under a second.
+TEST(DictionaryLimits, doublingMacrosAreAnErrorNotAHang) {
+    std::string text = "m0 1 2;\n";
+    for (int i = 1; i <= 40; ++i)
+        text +=
+            "m" + std::to_string(i) + " ($m" + std::to_string(i - 1) + " $m" + std::to_string(i - 1) + ");\n";
+    const auto start = std::chrono::steady_clock::now();
+    const std::string what = errorOf([&] { Dictionary::parse(text, "laughs"); });
+    const double seconds = secondsSince(start);
+    // m<k> holds 3 * 2^k - 1 values, and its line copies m<k-1> twice: m1 .. m17 copy
+    // 3 * (2^18 - 2) - 2 * 17 = 786 392 values, and the first $m17 (393 215 values) on line 19,
+    // column 6, takes the total to 1 179 607.
+    EXPECT_TRUE(has(what, "laughs:19:6: expanding '$m17' (393215 values)")) << what;
+    EXPECT_TRUE(has(what, "past the limit of 1000000")) << what;
+    EXPECT_LT(seconds, 1.0);
+    std::cout << "doubling macros refused in " << seconds << " s\n";
+
+    // Ordinary reuse stays well inside the limit: a table of 10^4 rows used three times.
+    std::string table = "table (";
+    for (int i = 0; i < 10000; ++i) table += "(" + std::to_string(i) + " 1.5)";
+    const Dictionary d = Dictionary::parse(table + ");\na $table; b $table; c $table;", "tables");
+    EXPECT_EQ(d.entry("c").tokens.at(0).list.size(), 10000u);
+}
+
+// Each `b ($a)` nests the value one level deeper than the macro it copies: braces stop at 200
+// levels, and macro values must too (the copies, printing and destruction of a value recurse as
+// deep as it nests, and the copies of 10^5 levels are quadratic).
+TEST(DictionaryLimits, nestingThroughMacrosIsLimitedLikeBraces) {
+    std::string text = "n0 1;\n";
+    for (int i = 1; i <= 300; ++i) text += "n" + std::to_string(i) + " ($n" + std::to_string(i - 1) + ");\n";
+    const std::string what = errorOf([&] { Dictionary::parse(text, "nest"); });
+    // n<k> is k lists deep, a value of k + 1 levels as the grammar counts (the value is one):
+    // n199 is the deepest that braces allow too, and n200 (line 201, column 7) is refused.
+    EXPECT_TRUE(has(what, "nest:201:7: nesting deeper than 200 levels: the value of '$n199' would reach 201"))
+        << what;
+    const Dictionary d = Dictionary::parse(text.substr(0, text.find("n200 ")), "nest");
+    EXPECT_EQ(Dictionary::parse(d.str(), "printed").str(), d.str())
+        << "what is read prints as text that reads";
+}
+
+// `#includeEtc "../../../../etc/passwd"` read any file outside the etc directories. A name with a
+// '..' component or a root is refused before any look-up, and a file whose real path leaves the
+// etc directory (a symbolic link) is refused too; each message names the directive's place and
+// the etc directories, and never the file's contents.
+TEST(DictionaryInclude, includeEtcStaysInsideTheEtcDirectories) {
+    TempDir dir("mfdynEtcEscape");
+    const fs::path etc = dir.path / "etc";
+    fs::create_directories(etc / "materials");
+    std::ofstream(etc / "materials" / "steel") << "rho0 7850;\n";
+    std::ofstream(dir.path / "secret") << "root:x:0:0:root:/root:/bin/bash\ndaemon:x:1:1::/usr/sbin\n";
+    fs::create_symlink(dir.path / "secret", etc / "materials" / "link");
+    ReadOptions options;
+    options.etcDirectories = {etc};
+    const auto read = [&](const std::string& name) {
+        return errorOf([&] { Dictionary::parse("a 1;\n  #includeEtc \"" + name + "\"\n", "case", options); });
+    };
+    for (const std::string name :
+         {"../secret", "materials/../../secret", "../../../../../../../../etc/passwd"}) {
+        const std::string what = read(name);
+        EXPECT_TRUE(has(what, "case:2:3: #includeEtc \"" + name + "\": a '..' component")) << what;
+        EXPECT_TRUE(has(what, etc.string())) << what;
+        EXPECT_FALSE(has(what, "root:x")) << what;
+    }
+    for (const std::string& name : std::vector<std::string>{(dir.path / "secret").string(), "/etc/passwd"}) {
+        const std::string what = read(name);
+        EXPECT_TRUE(has(what, "case:2:3: #includeEtc \"" + name + "\": an absolute path")) << what;
+        EXPECT_TRUE(has(what, etc.string())) << what;
+        EXPECT_FALSE(has(what, "root:x")) << what;
+    }
+    const std::string link = read("materials/link");
+    EXPECT_TRUE(has(link, "case:2:3: #includeEtc \"materials/link\": found as '" +
+                              (etc / "materials" / "link").string() + "', which leads to '" +
+                              fs::canonical(dir.path / "secret").string() + "', outside the etc directory"))
+        << link;
+    EXPECT_FALSE(has(link, "root:x")) << link;
+
+    // Inside, all still works, with or without a trailing '/' on the directory.
+    EXPECT_EQ(Dictionary::parse("#includeEtc \"materials/steel\"", "case", options).get<int>("rho0"), 7850);
+    options.etcDirectories = {etc.string() + "/"};
+    EXPECT_EQ(Dictionary::parse("#includeEtc \"./materials/steel\"", "case", options).get<int>("rho0"), 7850);
+}
+
+// A file that is not a dictionary parses as one long value: the message quotes a short excerpt
+// of the offending text, never the file. Here a 10 000-byte word as a keyword, and a value of
+// 5 000 words read as a number.
+TEST(DictionaryMessages, quoteOnlyAShortExcerpt) {
+    const std::string word(10000, 'w');
+    const std::string what = errorOf([&] { Dictionary::parse(word + " 1 2 3", "long"); });
+    EXPECT_TRUE(has(what, "long:1:10007: expected ';' after the value of 'wwww")) << what;
+    EXPECT_TRUE(has(what, "w...', found end of input")) << what;
+    EXPECT_LT(what.size(), 200u) << what;
+
+    std::string text = "a";
+    for (int i = 0; i < 5000; ++i) text += " line" + std::to_string(i);
+    const Dictionary d = Dictionary::parse(text + ";", "words");
+    const std::string type = errorOf([&] { d.get<double>("a"); });
+    EXPECT_TRUE(has(type, "words:1:3: keyword 'a': expected a real number, found 5000 values 'line0 line1"))
+        << type;
+    EXPECT_LT(type.size(), 200u) << type;
+
+    // Control bytes in a string (a terminal escape) are not echoed as they are.
+    const Dictionary s = Dictionary::parse("s \"\x1b[2J\";", "esc");
+    const std::string esc = errorOf([&] { s.get<double>("s"); });
+    EXPECT_TRUE(has(esc, "found the string \"?[2J\"")) << esc;
+}
+
+// Numbers beyond the range of a double were read as inf (1e999) or 0 (1e-400), values the user
+// did not write. They are errors at file:line:column; subnormal numbers are doubles and read
+// exactly as std::from_chars reads them.
+TEST(DictionaryNumbers, outOfRangeIsAnErrorAndSubnormalsAreRead) {
+    for (const std::string& number :
+         std::vector<std::string>{"1e999", "-1e999", "1e-400", "-2.5e-330", std::string(400, '9')}) {
+        const std::string what = errorOf([&] { Dictionary::parse("x\n  (1 " + number + ");", "range"); });
+        EXPECT_TRUE(has(what, "range:2:6: number '" + excerpt(number, 40) + "' is out of range")) << what;
+    }
+    const Dictionary d = Dictionary::parse(
+        "tiny 5e-321; least 4.9e-324; big 1.7976931348623157e308; zero 0e-999;"
+        " long 123456789012345678901234567890;",
+        "range");
+    EXPECT_EQ(d.get<double>("tiny"), 5e-321);
+    EXPECT_EQ(d.get<double>("least"), std::numeric_limits<double>::denorm_min());
+    EXPECT_EQ(d.get<double>("big"), std::numeric_limits<double>::max());
+    EXPECT_EQ(d.get<double>("zero"), 0.0);
+    EXPECT_EQ(d.get<double>("long"), 1.2345678901234568e29);
+}
+
+// No reader returns a non-finite number: inf and nan are words (refused with a reason), and a
+// token built in code with such a value is refused too.
+TEST(DictionaryNumbers, nonFiniteValuesAreRefused) {
+    const Dictionary d = Dictionary::parse("a inf; b -nan; c \"Infinity\"; w (1 inf);", "nf");
+    for (const char* key : {"a", "b", "c"}) {
+        const std::string what = errorOf([&] { d.get<double>(key); });
+        EXPECT_TRUE(has(what, "expected a real number")) << what;
+        EXPECT_TRUE(has(what, "(infinite and not-a-number values are not accepted)")) << what;
+    }
+    EXPECT_TRUE(has(errorOf([&] { d.get<std::vector<double>>("w"); }),
+                    "found the item 'inf' (infinite and not-a-number values are not accepted)"));
+    Dictionary built = Dictionary::parse("x 1.0;\nv (1.0 2.0);", "built");
+    built.entries()[0]->tokens[0].real = std::numeric_limits<double>::infinity();
+    built.entries()[1]->tokens[0].list[1].real = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(errorOf([&] { built.get<double>("x"); }),
+              "built:1:3: keyword 'x': expected a real number, found a non-finite value (infinite and "
+              "not-a-number values are not accepted)");
+    EXPECT_EQ(errorOf([&] { built.get<std::vector<double>>("v"); }),
+              "built:2:3: keyword 'v': expected a list of reals (...), found a non-finite item (infinite and "
+              "not-a-number values are not accepted)");
+}
+
+// A misspelt `intervall` was reported only as a missing `interval`; the message now names the key
+// that is there. A key that was read (another keyword) is not offered.
+TEST(DictionaryLookup, missingKeywordNamesTheMisspeltKey) {
+    const Dictionary d = Dictionary::parse("intervall 5;\nwriteIntervals 2;\n", "ctrl");
+    d.get<int>("writeIntervals");
+    EXPECT_EQ(errorOf([&] { d.get<double>("interval"); }),
+              "ctrl:1:1: missing keyword 'interval' (found 'intervall': did you mean 'interval'?)");
+    EXPECT_EQ(errorOf([&] { d.get<double>("writeInterval"); }), "ctrl:1:1: missing keyword 'writeInterval'");
+}
+
+// A file given as the case directory was reported as not existing.
+TEST(CaseDirectory, aFileIsNotADirectory) {
+    TempDir dir("mfdynCaseRoot");
+    std::ofstream(dir.path / "file") << "x";
+    EXPECT_EQ(errorOf([&] { Case c(dir.path / "file"); }),
+              "case directory '" + (dir.path / "file").string() + "' is not a directory");
+    EXPECT_EQ(errorOf([&] { Case c(dir.path / "missing"); }),
+              "case directory '" + (dir.path / "missing").string() + "' does not exist");
+    EXPECT_EQ(Case(dir.path).root(), dir.path);
+}

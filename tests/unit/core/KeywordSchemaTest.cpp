@@ -9,7 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <functional>
+#include <limits>
 #include <stdexcept>
 
 using namespace mfdyn;
@@ -297,4 +299,53 @@ TEST(KeywordSchema, NamesListsTablesAndExamples) {
     EXPECT_TRUE(contains(empty, "expected at least one name")) << empty;
     const std::string missing = messageOf([&] { schema.read(Dictionary::parse("field x;", "d")); });
     EXPECT_TRUE(contains(missing, "missing keyword 'rows'")) << missing;
+}
+
+// Hardening (issue 14).
+
+// A subnormal value in a bound message threw std::out_of_range from std::stod ("Error (internal):
+// stod"). The value is shown as read, in %g style with the digits that read back to it.
+TEST(KeywordSchema, SubnormalValuesAreShownAsRead) {
+    EXPECT_EQ(formatKeywordNumber(5e-321), "4.99994e-321");
+    EXPECT_EQ(formatKeywordNumber(1e-320), "9.99989e-321");  // not "0.000000"
+    EXPECT_EQ(formatKeywordNumber(std::numeric_limits<double>::denorm_min()), "4.94066e-324");
+    for (const double x : {5e-321, 1e-320, 2.2250738585072014e-308, 1.7976931348623157e308, 0.1 + 0.2})
+        EXPECT_EQ(std::strtod(formatKeywordNumber(x).c_str(), nullptr), x) << formatKeywordNumber(x);
+    EXPECT_EQ(formatKeywordNumber(2.65e8), "2.65e+08");
+    EXPECT_EQ(formatKeywordNumber(0.1 + 0.2), "0.30000000000000004");
+
+    const Dictionary dict =
+        Dictionary::parse("length 1;\nstiffness 1;\ncoils 1;\ndamping -5e-321;", "widgetDict");
+    const std::string what = messageOf([&] { widgetSchema().read(dict); });
+    EXPECT_TRUE(contains(
+        what, "widgetDict:4:1: keyword 'damping': expected a value >= 0 and <= 1, found -4.99994e-321"))
+        << what;
+}
+
+// A misspelt `intervall` was reported only as a missing `interval`: the message names the key that
+// is there. A key that is another keyword of the schema is not offered as the typo.
+TEST(KeywordSchema, MissingKeywordNamesTheMisspeltKey) {
+    const KeywordSchema schema = KeywordSchema("widgetForTest", "timer")
+                                     .scalar("interval", "s", "time between ticks")
+                                     .greaterThan(0)
+                                     .integer("intervals", "-", "number of ticks")
+                                     .optional();
+    const Dictionary typo = Dictionary::parse("\nintervall 0.5;", "timerDict");
+    EXPECT_EQ(
+        messageOf([&] { schema.read(typo); }),
+        "timerDict:1:1: missing keyword 'interval' (time between ticks, a real number in s), required by "
+        "widgetForTest type 'timer' (found 'intervall': did you mean 'interval'?)");
+    const Dictionary other = Dictionary::parse("intervals 3;", "timerDict");
+    const std::string what = messageOf([&] { schema.read(other); });
+    EXPECT_TRUE(contains(what, "missing keyword 'interval'")) << what;
+    EXPECT_FALSE(contains(what, "found 'intervals'")) << what;
+}
+
+// A word outside the choices is quoted as a short excerpt, not whole.
+TEST(KeywordSchema, WrongWordIsQuotedShort) {
+    const Dictionary dict =
+        Dictionary::parse("length 1; stiffness 1; law \"" + std::string(5000, 'x') + "\";", "widgetDict");
+    const std::string what = messageOf([&] { widgetSchema().read(dict); });
+    EXPECT_TRUE(contains(what, "expected one of linear | cubic, found 'xxx")) << what;
+    EXPECT_LT(what.size(), 300u) << what;
 }
