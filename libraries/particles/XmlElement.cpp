@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cstdint>
 #include <memory>
+#include <unordered_set>
 
 namespace mfdyn {
 
@@ -65,7 +66,7 @@ public:
         skipProlog();
         if (!peek("<")) fail("expected the root element");
         XmlElement root;
-        element(root);
+        element(root, 1);
         if (stopped_) {
             if (stopOffset) *stopOffset = stopOffset_;
             return root;
@@ -192,14 +193,18 @@ private:
         }
     }
 
-    int lineHere() const {
-        int line = 1;
-        for (std::size_t i = 0; i < pos_; ++i) line += s_[i] == '\n';
-        return line;
+    // The line of pos_, counted on from where the last call left off: pos_ only moves forward,
+    // so the whole parse counts each character once.
+    int lineHere() {
+        for (; lineCounted_ < pos_; ++lineCounted_) line_ += s_[lineCounted_] == '\n';
+        return line_;
     }
 
     // At '<' of a start tag. Returns with pos_ after the end tag (or after the stop tag).
-    void element(XmlElement& e) {
+    // `depth` is 1 for the root element.
+    void element(XmlElement& e, int depth) {
+        if (depth > XmlElement::maxDepth)
+            fail("elements nested more than " + std::to_string(XmlElement::maxDepth) + " deep");
         e.line = lineHere();
         expect("<");
         e.name = name();
@@ -226,11 +231,24 @@ private:
             std::string value = characters(quote);
             if (pos_ >= s_.size()) fail("unterminated attribute value");
             ++pos_;
-            if (e.findAttribute(key)) fail("attribute '" + key + "' repeated");
+            if (repeated(e, key)) fail("attribute '" + key + "' repeated");
             e.attributes.emplace_back(std::move(key), std::move(value));
         }
         if (e.name == stopAt_) return stop();
-        content(e);
+        content(e, depth);
+    }
+
+    // Whether `key` is already among e's attributes: a linear search for the few attributes
+    // real elements have, a hash set beyond that, so that an element with a million attributes
+    // is not a quadratic wait.
+    bool repeated(const XmlElement& e, const std::string& key) {
+        constexpr std::size_t few = 16;
+        if (e.attributes.size() < few) return e.findAttribute(key) != nullptr;
+        if (e.attributes.size() == few) {
+            keys_.clear();
+            for (const auto& [k, v] : e.attributes) keys_.insert(k);
+        }
+        return !keys_.insert(key).second;
     }
 
     void stop() {
@@ -238,7 +256,7 @@ private:
         stopOffset_ = pos_;
     }
 
-    void content(XmlElement& e) {
+    void content(XmlElement& e, int depth) {
         for (;;) {
             if (pos_ >= s_.size()) fail("element <" + e.name + "> is not closed");
             if (peek("</")) {
@@ -257,7 +275,7 @@ private:
                 skipUntil("?>");
             } else if (peek("<")) {
                 e.children.emplace_back();
-                element(e.children.back());
+                element(e.children.back(), depth + 1);
                 if (stopped_) return;
             } else {
                 e.text += characters('<');
@@ -271,6 +289,9 @@ private:
     std::string_view stopAt_;
     bool stopped_ = false;
     std::size_t stopOffset_ = 0;
+    int line_ = 1;                          // the line of s_[lineCounted_]
+    std::size_t lineCounted_ = 0;           // characters up to here are counted in line_
+    std::unordered_set<std::string> keys_;  // of the element being read, once it has many
 };
 
 }  // namespace

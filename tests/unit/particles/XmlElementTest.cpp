@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <string>
+
 using namespace mfdyn;
 
 TEST(XmlElement, ParsesElementsAttributesTextAndEntities) {
@@ -39,4 +42,71 @@ TEST(XmlElement, MalformedInputNamesFileLineAndColumn) {
             EXPECT_EQ(std::string(e.what()).rfind("bad.xml:", 0), 0u) << e.what();
         }
     }
+}
+
+TEST(XmlElement, DeepNestingIsAnErrorNotAStackOverflow) {
+    // 100 000 nested elements: on a668953 the recursive parser overflowed the stack (SIGSEGV at
+    // about 60 000 levels) in every solver and particleInfo.
+    const int levels = 100000;
+    std::string text;
+    text.reserve(std::size_t(levels) * 8);
+    for (int i = 0; i < levels; ++i) text += "<a>\n";  // element k on line k
+    for (int i = 0; i < levels; ++i) text += "</a>";
+    try {
+        XmlElement::parse(text, "deep.pvd");
+        ADD_FAILURE() << "no error for " << levels << " nested elements";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        // The first element too deep is the one refused, on its own line.
+        EXPECT_EQ(what.rfind("deep.pvd:" + std::to_string(XmlElement::maxDepth + 1) + ":1:", 0), 0u) << what;
+        EXPECT_NE(what.find("nested more than " + std::to_string(XmlElement::maxDepth) + " deep"),
+                  std::string::npos)
+            << what;
+    }
+    // Exactly maxDepth levels are still a document.
+    std::string ok;
+    for (int i = 0; i < XmlElement::maxDepth; ++i) ok += "<a>";
+    for (int i = 0; i < XmlElement::maxDepth; ++i) ok += "</a>";
+    EXPECT_NO_THROW(XmlElement::parse(ok, "ok.xml"));
+}
+
+TEST(XmlElement, LineNumbersStayRightAcrossAWholeDocument) {
+    // Lines are now counted on from element to element; each must still be its own.
+    std::string text = "<?xml version=\"1.0\"?>\n<r>\n";
+    for (int i = 0; i < 1000; ++i) text += (i % 2 ? "  <e/>\n" : "  <!-- c\n -->\n  <e a=\"x\n y\"/>\n");
+    text += "</r>\n";
+    const XmlElement root = XmlElement::parse(text, "lines.xml");
+    ASSERT_EQ(root.children.size(), 1000u);
+    EXPECT_EQ(root.line, 2);
+    int line = 3;
+    for (int i = 0; i < 1000; ++i) {
+        if (i % 2 == 0) line += 2;  // the comment's two lines
+        EXPECT_EQ(root.children[std::size_t(i)].line, line) << i;
+        line += i % 2 ? 1 : 2;  // the attribute value holds a newline
+    }
+    // And a failure after all of them still names its own line.
+    try {
+        XmlElement::parse(text + "<x/>", "lines.xml");
+        ADD_FAILURE() << "content after the root accepted";
+    } catch (const InputError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind("lines.xml:" + std::to_string(line + 1) + ":", 0), 0u)
+            << e.what();
+    }
+}
+
+TEST(XmlElement, ManyAttributesAreCheckedForRepeatsQuickly) {
+    // 100 000 distinct attributes, then one repeated: found, and without a quadratic search
+    // (which was 5e9 comparisons here).
+    std::string text = "<a";
+    for (int i = 0; i < 100000; ++i) text += " k" + std::to_string(i) + "=\"\"";
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_EQ(XmlElement::parse(text + "/>", "wide.xml").attributes.size(), 100000u);
+    try {
+        XmlElement::parse(text + " k77=\"\"/>", "wide.xml");
+        ADD_FAILURE() << "repeated attribute accepted";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("attribute 'k77' repeated"), std::string::npos) << e.what();
+    }
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_LT(seconds, 2.0) << "linear: each is a hash look-up";
 }
