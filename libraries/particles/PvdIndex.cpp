@@ -1,14 +1,14 @@
 #include "particles/PvdIndex.hpp"
 
 #include "core/Error.hpp"
+#include "particles/RegularFile.hpp"
 #include "particles/TimeDirectory.hpp"
 #include "particles/XmlElement.hpp"
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
-#include <fstream>
-#include <sstream>
 
 namespace mfdyn {
 
@@ -17,16 +17,18 @@ PvdIndex::PvdIndex(std::filesystem::path file) : file_(std::move(file)) {}
 PvdIndex PvdIndex::read(const std::filesystem::path& file) {
     PvdIndex index(file);
     std::error_code ec;
-    if (!std::filesystem::exists(file, ec)) return index;
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in) throw InputError("cannot read '" + file.string() + "'");
-    const XmlElement root = XmlElement::parse(text.str(), file.string());
+    // symlink_status: a dangling link is "there" and an error below, not an empty index that
+    // the next write would put in its place.
+    if (std::filesystem::symlink_status(file, ec).type() == std::filesystem::file_type::not_found)
+        return index;
+    const RegularFile text(file);  // a FIFO or directory is an InputError, not a wait
+    const XmlElement root = XmlElement::parse(text.view(), file.string());
     const XmlElement* collection = root.findChild("Collection");
     if (root.name != "VTKFile" || !collection)
         throw InputError("'" + file.string() + "' is not a VTK collection (.pvd) file");
-    for (const XmlElement* e : collection->childrenNamed("DataSet")) {
+    const auto dataSets = collection->childrenNamed("DataSet");
+    index.entries_.reserve(dataSets.size());
+    for (const XmlElement* e : dataSets) {
         const std::string* time = e->findAttribute("timestep");
         const std::string* name = e->findAttribute("file");
         double value = 0;
@@ -35,8 +37,26 @@ PvdIndex PvdIndex::read(const std::filesystem::path& file) {
                 time->data() + time->size())
             throw InputError("'" + file.string() + "' line " + std::to_string(e->line) +
                              ": DataSet needs a numeric timestep and a file");
-        index.add(value, *name);
+        // from_chars reads "nan" and "inf" too; neither is a time, and a NaN would break the
+        // ordering that add() and truncateAfter() rely on.
+        if (!std::isfinite(value))
+            throw InputError("'" + file.string() + "' line " + std::to_string(e->line) + ": timestep \"" +
+                             *time + "\" is not a finite number");
+        index.entries_.push_back(Entry{value, *name});
     }
+    // What add() one at a time would give (sorted by time, the last entry of a time kept), in
+    // n log n: add() inserts into a vector, quadratic for an index listed in reverse.
+    std::stable_sort(index.entries_.begin(), index.entries_.end(),
+                     [](const Entry& a, const Entry& b) { return a.time < b.time; });
+    std::vector<Entry> unique;
+    unique.reserve(index.entries_.size());
+    for (Entry& e : index.entries_) {
+        if (!unique.empty() && unique.back().time == e.time)
+            unique.back() = std::move(e);
+        else
+            unique.push_back(std::move(e));
+    }
+    index.entries_ = std::move(unique);
     return index;
 }
 
