@@ -1,5 +1,7 @@
 #include "particles/FieldStore.hpp"
 
+#include "particles/VtpWriter.hpp"
+
 #include <algorithm>
 #include <cstdio>
 
@@ -10,7 +12,11 @@ FieldStore::FieldStore(int dimension, std::size_t size) : dimension_(dimension),
         throw InputError("particle dimension " + std::to_string(dimension) + " is not 1, 2 or 3");
 }
 
-FieldStore::FieldStore(const FieldStore& other) : dimension_(other.dimension_), size_(other.size_) {
+FieldStore::FieldStore(const FieldStore& other)
+    : dimension_(other.dimension_),
+      size_(other.size_),
+      source_(other.source_),
+      sourceFields_(other.sourceFields_) {
     for (const auto& f : other.fields_) fields_.push_back(f->clone());
 }
 
@@ -54,6 +60,8 @@ bool FieldStore::removeField(const std::string& name) {
     auto it = std::find_if(fields_.begin(), fields_.end(), [&](const auto& f) { return f->name() == name; });
     if (it == fields_.end()) return false;
     fields_.erase(it);
+    // A field made again under this name later is the code's, not the file's.
+    std::erase(sourceFields_, name);
     return true;
 }
 
@@ -99,7 +107,23 @@ void FieldStore::checkDimension(const std::string& name, int typeDim, const std:
                     "D particle set");
 }
 
-void FieldStore::typeClash(const FieldBase& existing, const std::string& requested) const {
+void FieldStore::setSource(const std::string& file) {
+    source_ = file;
+    sourceFields_ = fieldNames();
+}
+
+void FieldStore::typeClash(const FieldBase& existing, const std::string& requested,
+                           FieldKind requestedKind) const {
+    if (std::find(sourceFields_.begin(), sourceFields_.end(), existing.name()) != sourceFields_.end()) {
+        auto components = [](FieldKind kind) {
+            const int n = vtkComponents(kind);
+            return std::to_string(n) + (n == 1 ? " component" : " components");
+        };
+        throw InputError("particle file '" + source_ + "': field '" + existing.name() + "' is a " +
+                         existing.typeName() + " (" + components(existing.kind()) +
+                         " in the file) but is needed as a " + requested + " (" + components(requestedKind) +
+                         " in a particle file)");
+    }
     throw Error("field '" + existing.name() + "' is a " + existing.typeName() + " but was asked for as a " +
                 requested);
 }

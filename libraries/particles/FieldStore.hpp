@@ -55,23 +55,32 @@ public:
     // Apply one permutation to every field (see FieldBase::reorder).
     void reorder(const std::vector<std::size_t>& order);
 
+    // The particle file the fields there are now were read from (the reader sets it). A field
+    // of the file asked for with another type is then the file's fault, not the code's: an
+    // InputError naming the file, what it holds and what was expected, instead of an Error.
+    void setSource(const std::string& file);
+    const std::string& source() const { return source_; }
+
 private:
     template <class T>
     Field<T>* typed(FieldBase* base, FieldKind kind) const;
     void checkDimension(const std::string& name, int typeDim, const std::string& typeName) const;
-    [[noreturn]] void typeClash(const FieldBase& existing, const std::string& requested) const;
+    [[noreturn]] void typeClash(const FieldBase& existing, const std::string& requested,
+                                FieldKind requestedKind) const;
     [[noreturn]] void missing(const std::string& name) const;
     static std::string typeName(FieldKind kind, int dim);
 
     int dimension_;
     std::size_t size_;
     std::vector<std::unique_ptr<FieldBase>> fields_;
+    std::string source_;                     // see setSource()
+    std::vector<std::string> sourceFields_;  // the fields read from source_
 };
 
 template <class T>
 Field<T>* FieldStore::typed(FieldBase* base, FieldKind kind) const {
     if (!base) return nullptr;
-    if (base->elementType() != typeid(T)) typeClash(*base, typeName(kind, FieldTraits<T>::dim));
+    if (base->elementType() != typeid(T)) typeClash(*base, typeName(kind, FieldTraits<T>::dim), kind);
     return static_cast<Field<T>*>(base);
 }
 

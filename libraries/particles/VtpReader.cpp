@@ -3,6 +3,7 @@
 #include "core/Error.hpp"
 #include "core/Parallel.hpp"
 #include "particles/ParticleSet.hpp"
+#include "particles/RegularFile.hpp"
 #include "particles/VtpWriter.hpp"
 #include "particles/XmlElement.hpp"
 
@@ -10,8 +11,11 @@
 #include <cctype>
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <new>
+#include <set>
 
 namespace mfdyn {
 
@@ -36,6 +40,10 @@ bool isFloat(Scalar s) {
     return s == Scalar::float32 || s == Scalar::float64;
 }
 
+// No VTK array mfdyn reads has more than 9 components (a tensor); the bound keeps sizes derived
+// from NumberOfComponents small and their products free of overflow.
+constexpr std::int64_t maxComponents = 64;
+
 // One appended array located in the file and checked against its size.
 struct Array {
     std::string name;
@@ -50,10 +58,12 @@ public:
     explicit Reader(const std::filesystem::path& file) : file_(file) {}
 
     ParticleFile read() {
-        load();
+        contents_ = std::make_unique<RegularFile>(file_);  // a FIFO is an error, not a wait
+        buffer_ = contents_->data();
+        size_ = contents_->size();
         std::size_t stop = 0;
         const XmlElement root =
-            XmlElement::parse(std::string_view(buffer_.get(), size_), file_.string(), "AppendedData", &stop);
+            XmlElement::parse(std::string_view(buffer_, size_), file_.string(), "AppendedData", &stop);
         checkHeader(root);
         const XmlElement& polyData = child(root, "PolyData");
         const XmlElement* appended = nullptr;
@@ -70,7 +80,7 @@ public:
         // The arrays' own sizes catch a cut inside the data; this catches a cut after it.
         std::size_t end = size_;
         while (end > dataStart_ && std::isspace(static_cast<unsigned char>(buffer_[end - 1]))) --end;
-        if (!std::string_view(buffer_.get() + dataStart_, end - dataStart_).ends_with("</VTKFile>"))
+        if (!std::string_view(buffer_ + dataStart_, end - dataStart_).ends_with("</VTKFile>"))
             fail("truncated: the file does not end with </VTKFile>");
 
         auto pieces = polyData.childrenNamed("Piece");
@@ -84,10 +94,15 @@ public:
         if (const XmlElement* fieldData = polyData.findChild("FieldData")) {
             for (const XmlElement* e : fieldData->childrenNamed("DataArray")) {
                 const std::string name = attribute(*e, "Name");
-                if (name == "mfdynDimension")
-                    dim = int(singleValue(*e));
-                else if (name == "time") {
+                if (name == "mfdynDimension") {
+                    // Checked as a double: converting NaN or 1e300 to int is undefined.
+                    const double value = singleValue(*e);
+                    if (!(value == 1 || value == 2 || value == 3))
+                        fail("mfdynDimension is " + formatNumber(value) + ", not 1, 2 or 3");
+                    dim = int(value);
+                } else if (name == "time") {
                     result.time = singleValue(*e);
+                    if (!std::isfinite(result.time)) fail("time is " + formatNumber(result.time));
                     result.hasTime = true;
                 } else if (name == "regionNames")
                     regionNames = strings(*e);
@@ -104,8 +119,15 @@ public:
         if (dim < 1 || dim > 3) fail("mfdynDimension is " + std::to_string(dim) + ", not 1, 2 or 3");
 
         std::vector<Array> arrays;
+        std::set<std::string> names;
         if (const XmlElement* pointData = piece.findChild("PointData"))
-            for (const XmlElement* e : pointData->childrenNamed("DataArray")) arrays.push_back(locate(*e, n));
+            for (const XmlElement* e : pointData->childrenNamed("DataArray")) {
+                arrays.push_back(locate(*e, n));
+                // Two arrays of one name would silently overwrite each other.
+                if (!names.insert(arrays.back().name).second)
+                    fail("PointData array '" + arrays.back().name + "' appears twice (line " +
+                         std::to_string(e->line) + ")");
+            }
 
         result.particles = withDimension(dim, [&](auto d) -> std::unique_ptr<ParticleSetBase> {
             constexpr int Dim = decltype(d)::value;
@@ -128,35 +150,20 @@ public:
                 auto& id = set->globalId();
                 for (std::size_t i = 0; i < n; ++i) id[i] = std::int64_t(i);
             }
+            checkRegions(set->region(), regionNames.size());
             return set;
         });
         result.particles->regionNames = std::move(regionNames);
         result.particles->materialNames = std::move(materialNames);
+        // Fields read here that a model then asks for with another type are the file's fault:
+        // the clash is reported as an InputError naming this file.
+        result.particles->setSource(file_.string());
         return result;
     }
 
 private:
     [[noreturn]] void fail(const std::string& what) const {
         throw InputError("particle file '" + file_.string() + "': " + what);
-    }
-
-    void load() {
-        std::FILE* in = std::fopen(file_.c_str(), "rb");
-        if (!in) fail(std::string("cannot open: ") + std::strerror(errno));
-        std::error_code ec;
-        const auto size = std::filesystem::file_size(file_, ec);
-        if (ec) {
-            std::fclose(in);
-            fail("cannot read its size: " + ec.message());
-        }
-        size_ = std::size_t(size);
-        // Uninitialised on purpose: the whole file is read over it.
-        buffer_.reset(new char[size_ + 1]);
-        const std::size_t got = std::fread(buffer_.get(), 1, size_, in);
-        const bool bad = std::ferror(in);
-        std::fclose(in);
-        if (bad || got != size_) fail(std::string("read error: ") + std::strerror(errno));
-        buffer_[size_] = '\0';
     }
 
     void checkHeader(const XmlElement& root) {
@@ -174,6 +181,25 @@ private:
             else
                 fail("unknown header_type '" + *header + "'");
         }
+    }
+
+    static std::string formatNumber(double v) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.17g", v);
+        return text;
+    }
+
+    // Region ids index regionNames and size per-region tables (particleInfo's counts): a
+    // corrupt id of 4e8 would make those allocate gigabytes. Ids from 0 to the larger of the
+    // particle count and the number of region names are accepted (ids beyond the names are
+    // unnamed regions), which keeps any such table no larger than the particle data.
+    void checkRegions(const std::vector<std::int64_t>& region, std::size_t names) const {
+        const std::size_t limit = std::max(region.size(), names);
+        for (std::size_t i = 0; i < region.size(); ++i)
+            if (region[i] < 0 || std::uint64_t(region[i]) >= limit)
+                fail("particle " + std::to_string(i) + " has region id " + std::to_string(region[i]) +
+                     "; with " + std::to_string(region.size()) + " particles and " + std::to_string(names) +
+                     " region names, region ids run from 0 to " + std::to_string(limit - 1));
     }
 
     const XmlElement& child(const XmlElement& parent, std::string_view name) const {
@@ -213,28 +239,42 @@ private:
         if (const std::string* format = e.findAttribute("format"); !format || *format != "appended")
             fail(where + " has format '" + (format ? *format : std::string()) +
                  "'; only appended data is supported");
-        if (e.findAttribute("NumberOfComponents"))
-            a.components = int(integerAttribute(e, "NumberOfComponents"));
-        if (a.components < 1) fail(where + " has no components");
+        if (e.findAttribute("NumberOfComponents")) {
+            const std::int64_t components = integerAttribute(e, "NumberOfComponents");
+            if (components < 1 || components > maxComponents)
+                fail(where + " has NumberOfComponents=\"" + attribute(e, "NumberOfComponents") +
+                     "\"; it must be 1 to " + std::to_string(maxComponents));
+            a.components = int(components);
+        }
+        // Every size below is compared by subtraction from what the file holds, never by adding
+        // a number from the file to another: a sum can wrap around 2^64 and pass the check
+        // (a NumberOfPoints near 2^61 did, and the reader then ran through memory).
         const std::uint64_t offset = std::uint64_t(integerAttribute(e, "offset"));
+        const std::uint64_t data = size_ - dataStart_;  // dataStart_ <= size_ (checked in read())
+        if (offset > data || data - offset < headerBytes_)
+            fail("truncated: " + where + " starts at byte " + std::to_string(offset) +
+                 " of the appended data, but the file has " + std::to_string(data) + " bytes of it");
         const std::uint64_t begin = dataStart_ + offset;
-        if (begin + headerBytes_ > size_)
-            fail("truncated: " + where + " starts at byte " + std::to_string(begin) + " but the file has " +
-                 std::to_string(size_) + " bytes");
         if (headerBytes_ == 8) {
-            std::memcpy(&a.byteCount, buffer_.get() + begin, 8);
+            std::memcpy(&a.byteCount, buffer_ + begin, 8);
         } else {
             std::uint32_t count;
-            std::memcpy(&count, buffer_.get() + begin, 4);
+            std::memcpy(&count, buffer_ + begin, 4);
             a.byteCount = count;
         }
-        if (begin + headerBytes_ + a.byteCount > size_)
-            fail("truncated: " + where + " needs bytes up to " +
-                 std::to_string(begin + headerBytes_ + a.byteCount) + " but the file has " +
-                 std::to_string(size_));
-        a.bytes = buffer_.get() + begin + headerBytes_;
+        const std::uint64_t left = size_ - begin - headerBytes_;
+        if (a.byteCount > left)
+            fail("truncated: " + where + " says it holds " + std::to_string(a.byteCount) +
+                 " bytes but only " + std::to_string(left) + " follow in the file");
+        a.bytes = buffer_ + begin + headerBytes_;
         if (a.type.scalar != Scalar::string) {
-            const std::uint64_t expected = std::uint64_t(tuples) * a.components * a.type.bytes;
+            const std::uint64_t perTuple = std::uint64_t(a.components) * a.type.bytes;  // <= 64 x 8
+            if (std::uint64_t(tuples) > left / perTuple)
+                fail(where + ": " + std::to_string(tuples) + " tuples x " + std::to_string(a.components) +
+                     " components x " + std::to_string(a.type.bytes) + " bytes exceed the " +
+                     std::to_string(left) + " bytes left in the file (NumberOfPoints or " +
+                     "NumberOfComponents is wrong)");
+            const std::uint64_t expected = std::uint64_t(tuples) * perTuple;
             if (a.byteCount != expected)
                 fail(where + " holds " + std::to_string(a.byteCount) + " bytes; " + std::to_string(tuples) +
                      " x " + std::to_string(a.components) + " " + a.type.name + " need " +
@@ -380,7 +420,8 @@ private:
     }
 
     std::filesystem::path file_;
-    std::unique_ptr<char[]> buffer_;
+    std::unique_ptr<RegularFile> contents_;
+    const char* buffer_ = nullptr;  // contents_'s bytes
     std::size_t size_ = 0;
     std::size_t dataStart_ = 0;
     std::size_t headerBytes_ = 4;
@@ -389,7 +430,14 @@ private:
 }  // namespace
 
 ParticleFile readVtp(const std::filesystem::path& file) {
-    return Reader(file).read();
+    try {
+        return Reader(file).read();
+    } catch (const std::bad_alloc&) {
+        // Every size is checked against the file's, so this is a file genuinely larger than
+        // the memory there is; still the file's matter, not an internal error.
+        throw InputError("particle file '" + file.string() +
+                         "': its particles need more memory than there is");
+    }
 }
 
 }  // namespace mfdyn

@@ -9,7 +9,9 @@
 #include <gtest/gtest.h>
 
 #include <bit>
+#include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <limits>
 #include <random>
@@ -77,6 +79,9 @@ ParticleSet<Dim> makeParticles(std::size_t n, unsigned seed) {
             for (std::size_t k = 0; k < count; ++k) data[k] = v.next();
         }
     }
+    // Region ids index the region names: the reader accepts 0 up to the larger of the particle
+    // count and the number of names, so they are the one integer field not left random.
+    for (std::size_t i = 0; i < n; ++i) p.region()[i] = std::int64_t((i * 7919) % n);
     p.regionNames = {"projectile", "target plate", "a&b <\"c\">"};
     p.materialNames = {"aluminium2024"};
     return p;
@@ -301,4 +306,255 @@ TEST(VtpReader, DISABLED_SpeedMillionParticles3D) {
     std::printf("1e6 particles 3D, %zu bytes/particle, file %.0f MB: write %.2f s, read %.2f s\n",
                 p.bytesPerParticle(), bytes / 1e6, writeSeconds, readSeconds);
     EXPECT_EQ(back.particles->size(), p.size());
+}
+
+namespace {
+
+// The byte offset in `file` of the appended data of array `name` (its UInt64 byte count).
+std::size_t arrayStart(const std::string& file, const std::string& name) {
+    std::size_t stop = 0;
+    const XmlElement root = XmlElement::parse(file, "test", "AppendedData", &stop);
+    const std::size_t data = file.find('_', stop) + 1;
+    std::vector<const XmlElement*> todo{&root};
+    while (!todo.empty()) {
+        const XmlElement* e = todo.back();
+        todo.pop_back();
+        if (e->name == "DataArray" && *e->findAttribute("Name") == name)
+            return data + std::size_t(std::stoull(*e->findAttribute("offset")));
+        for (const auto& c : e->children) todo.push_back(&c);
+    }
+    ADD_FAILURE() << "no array " << name;
+    return 0;
+}
+
+// readVtp's InputError message for `file`, or "" (with a test failure) when it reads.
+std::string readError(const std::filesystem::path& file) {
+    try {
+        readVtp(file);
+        ADD_FAILURE() << "no error for " << file;
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(VtpReader, HugeNumberOfPointsIsRefusedWithoutOverflow) {
+    // 2^61 points x 3 x 8 bytes is 3 x 2^64: 0 after wrap-around, which matched the 0-byte arrays
+    // of an empty file on a668953, so the reader went on to allocate or run through 2^61 points.
+    ScratchDir dir("hugeN");
+    writeVtp(dir.path() / "p.vtp", makeParticles<3>(0, 1), 0.0);
+    std::string file = readFile(dir.path() / "p.vtp");
+    const std::string huge = "2305843009213693952";  // 2^61
+    file.replace(file.find("NumberOfPoints=\"0\""), 18, "NumberOfPoints=\"" + huge + "\"");
+    writeFile(dir.path() / "huge.vtp", file);
+    const std::string what = readError(dir.path() / "huge.vtp");
+    EXPECT_NE(what.find(dir.path().string() + "/huge.vtp"), std::string::npos) << what;
+    EXPECT_NE(what.find(huge + " tuples"), std::string::npos) << what;
+    EXPECT_NE(what.find("bytes left in the file"), std::string::npos) << what;
+}
+
+TEST(VtpReader, HugeByteCountIsRefusedWithoutOverflow) {
+    // A byte count near 2^64 wrapped past the end-of-file check; for the region names (a String
+    // array, not checked against a tuple count) the reader then read far beyond the file.
+    ScratchDir dir("hugeCount");
+    writeVtp(dir.path() / "p.vtp", makeParticles<2>(5, 2), 0.0);
+    std::string file = readFile(dir.path() / "p.vtp");
+    const std::uint64_t count = ~std::uint64_t(0) - 15;
+    std::memcpy(file.data() + arrayStart(file, "regionNames"), &count, 8);
+    writeFile(dir.path() / "count.vtp", file);
+    const std::string what = readError(dir.path() / "count.vtp");
+    EXPECT_NE(what.find("count.vtp"), std::string::npos) << what;
+    EXPECT_NE(what.find("regionNames"), std::string::npos) << what;
+    EXPECT_NE(what.find("says it holds " + std::to_string(count) + " bytes"), std::string::npos) << what;
+}
+
+TEST(VtpReader, HugeComponentCountIsRefused) {
+    ScratchDir dir("hugeComponents");
+    writeVtp(dir.path() / "p.vtp", makeParticles<3>(4, 3), 0.0);
+    std::string file = readFile(dir.path() / "p.vtp");
+    // 2^62 + 1 components: int() of it was 1, so the array was taken for a scalar.
+    const std::size_t at = file.find("NumberOfComponents=\"3\"", file.find("Name=\"velocity\""));
+    file.replace(at, 22, "NumberOfComponents=\"4611686018427387905\"");
+    writeFile(dir.path() / "c.vtp", file);
+    const std::string what = readError(dir.path() / "c.vtp");
+    EXPECT_NE(what.find("velocity"), std::string::npos) << what;
+    EXPECT_NE(what.find("NumberOfComponents=\"4611686018427387905\"; it must be 1 to 64"), std::string::npos)
+        << what;
+}
+
+TEST(VtpReader, RegionIdOutOfRangeIsAnErrorNamingTheFile) {
+    // A corrupt region id of 4e8 made particleInfo's per-region table allocate 3.2 GB.
+    ScratchDir dir("region");
+    ParticleSet<2> p(3);
+    p.region() = {0, 400000000, 1};
+    p.regionNames = {"a", "b"};
+    writeVtp(dir.path() / "p.vtp", p, 0.0);
+    const std::string what = readError(dir.path() / "p.vtp");
+    EXPECT_NE(what.find(dir.path().string() + "/p.vtp"), std::string::npos) << what;
+    EXPECT_NE(what.find("particle 1 has region id 400000000"), std::string::npos) << what;
+    EXPECT_NE(what.find("region ids run from 0 to 2"), std::string::npos) << what;
+    p.region() = {0, -1, 1};
+    writeVtp(dir.path() / "p.vtp", p, 0.0);
+    EXPECT_NE(readError(dir.path() / "p.vtp").find("region id -1"), std::string::npos);
+    // Ids beyond the names but within the particle count are unnamed regions, still read.
+    p.region() = {0, 2, 1};
+    writeVtp(dir.path() / "p.vtp", p, 0.0);
+    EXPECT_EQ(readVtp(dir.path() / "p.vtp").particles->regionCounts(), (std::vector<std::size_t>{1, 1, 1}));
+}
+
+TEST(VtpReader, NonFiniteTimeIsAnError) {
+    ScratchDir dir("nanTime");
+    writeVtp(dir.path() / "p.vtp", ParticleSet<1>(2), std::numeric_limits<double>::quiet_NaN());
+    const std::string what = readError(dir.path() / "p.vtp");
+    EXPECT_NE(what.find("p.vtp': time is nan"), std::string::npos) << what;
+}
+
+TEST(VtpReader, RepeatedArrayIsAnError) {
+    ScratchDir dir("repeated");
+    ParticleSet<1> p(2);
+    p.scalarField("rho");
+    p.scalarField("rhx");
+    writeVtp(dir.path() / "p.vtp", p, 0.0);
+    std::string file = readFile(dir.path() / "p.vtp");
+    file.replace(file.find("Name=\"rhx\""), 10, "Name=\"rho\"");
+    writeFile(dir.path() / "p.vtp", file);
+    EXPECT_NE(readError(dir.path() / "p.vtp").find("PointData array 'rho' appears twice"), std::string::npos);
+}
+
+TEST(VtpReader, FifoIsRefusedWithoutBlocking) {
+    // On a668953 fopen() of a FIFO waited for a writer that never came.
+    ScratchDir dir("fifo");
+    const auto file = dir.path() / "particles.vtp";
+    const auto result = mfdyn::test::readFifo(file, [&] { readVtp(file); });
+    EXPECT_FALSE(result.blocked) << "the read blocked for " << result.seconds << " s";
+    EXPECT_NE(result.message.find("'" + file.string() + "' is not a regular file"), std::string::npos)
+        << result.message;
+    EXPECT_NE(readError(dir.path()).find("is not a regular file (it is a directory)"), std::string::npos);
+}
+
+TEST(VtpReader, FieldOfTheWrongKindNamesTheFile) {
+    // On a668953: "field 'velocity' is a scalar but was asked for as a vector<2>", an Error with
+    // no file, though the file is what is wrong.
+    ScratchDir dir("wrongKind");
+    ParticleSet<2> p(3);
+    p.scalarField("velocity");
+    writeVtp(dir.path() / "p.vtp", p, 0.0);
+    ParticleFile back = readVtp(dir.path() / "p.vtp");
+    auto& particles = particleSetCast<2>(*back.particles);
+    try {
+        particles.vectorField("velocity");
+        ADD_FAILURE() << "a scalar taken for a vector";
+    } catch (const InputError& e) {
+        EXPECT_EQ(
+            std::string(e.what()),
+            "particle file '" + (dir.path() / "p.vtp").string() +
+                "': field 'velocity' is a scalar (1 component in the file) but is needed as a vector<2> "
+                "(3 components in a particle file)");
+    }
+    // A field the code made itself keeps the plain Error: there the code is wrong, not a file.
+    particles.scalarField("made");
+    try {
+        particles.vectorField("made");
+        ADD_FAILURE() << "a scalar taken for a vector";
+    } catch (const InputError& e) {
+        ADD_FAILURE() << "blamed on the file: " << e.what();
+    } catch (const Error& e) {
+        EXPECT_EQ(std::string(e.what()).find("particle file"), std::string::npos) << e.what();
+    }
+}
+
+TEST(VtpReader, MutatedFilesAreReadOrRefusedCleanly) {
+    // A fixed-seed mutation loop over a written file: bit flips, hostile numbers in the header,
+    // cuts, deletions, insertions and corrupted byte counts. Every outcome must be a particle set
+    // or an InputError naming the file: no crash, no hang, no other exception. (Run it under
+    // AddressSanitizer to see reads beyond the buffer.)
+    ScratchDir dir("mutate");
+    auto particles = makeParticles<3>(6, 11);
+    writeVtp(dir.path() / "p.vtp", particles, 0.5);
+    const std::string whole = readFile(dir.path() / "p.vtp");
+    const std::size_t header = whole.find("<AppendedData");
+    const auto file = dir.path() / "m.vtp";
+    const char* numbers[] = {
+        "-1",        "0",   "nan", "1e300", "18446744073709551615", "2305843009213693952",
+        "999999999", "4e8", "+3",  " 3",    "9223372036854775807",  "-9223372036854775808"};
+    const std::uint64_t counts[] = {
+        0, 1, 7, 8, 0xFFFFFFFF, ~std::uint64_t(0), ~std::uint64_t(0) - 7, std::uint64_t(1) << 61};
+    std::mt19937_64 rng(1414);
+    std::size_t read = 0, refused = 0;
+    for (int m = 0; m < 400; ++m) {
+        std::string text = whole;
+        std::string what;
+        switch (m % 7) {
+            case 0: {  // a bit flip anywhere
+                const std::size_t at = rng() % text.size();
+                text[at] = char(text[at] ^ (1 << (rng() % 8)));
+                what = "bit flip at " + std::to_string(at);
+                break;
+            }
+            case 1: {  // a number of the header replaced by a hostile one
+                std::vector<std::size_t> digits;
+                for (std::size_t i = 0; i < header; ++i)
+                    if (std::isdigit(static_cast<unsigned char>(text[i])) && text[i - 1] == '"')
+                        digits.push_back(i);
+                const std::size_t at = digits[rng() % digits.size()];
+                const std::size_t end = text.find('"', at);
+                const char* number = numbers[rng() % std::size(numbers)];
+                text.replace(at, end - at, number);
+                what = "number at " + std::to_string(at) + " -> " + number;
+                break;
+            }
+            case 2: {  // cut
+                const std::size_t at = rng() % text.size();
+                text.resize(at);
+                what = "cut at " + std::to_string(at);
+                break;
+            }
+            case 3: {  // a range deleted
+                const std::size_t at = rng() % text.size();
+                text.erase(at, 1 + rng() % 64);
+                what = "erase at " + std::to_string(at);
+                break;
+            }
+            case 4: {  // a range duplicated
+                const std::size_t at = rng() % text.size();
+                text.insert(at, text.substr(at, 1 + rng() % 64));
+                what = "duplicate at " + std::to_string(at);
+                break;
+            }
+            case 5: {  // an array's byte count corrupted
+                const char* names[] = {"position",    "rho",  "velocity",      "F",
+                                       "regionNames", "time", "mfdynDimension"};
+                const char* name = names[rng() % std::size(names)];
+                const std::uint64_t count = counts[rng() % std::size(counts)];
+                std::memcpy(text.data() + arrayStart(whole, name), &count, 8);
+                what = std::string("byte count of ") + name + " -> " + std::to_string(count);
+                break;
+            }
+            case 6: {  // random bytes over a stretch of the header
+                const std::size_t at = rng() % header;
+                for (std::size_t k = at; k < std::min(header, at + 1 + rng() % 8); ++k) text[k] = char(rng());
+                what = "random bytes at " + std::to_string(at);
+                break;
+            }
+        }
+        writeFile(file, text);
+        try {
+            const ParticleFile back = readVtp(file);
+            ++read;
+            for (const auto& f : back.particles->fields())
+                EXPECT_EQ(f->size(), back.particles->size()) << what;
+            EXPECT_NO_THROW(back.particles->regionCounts()) << what;
+        } catch (const InputError& e) {
+            ++refused;
+            EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos)
+                << what << ": " << e.what();
+        } catch (const std::exception& e) {
+            ADD_FAILURE() << what << ": not an InputError: " << e.what();
+        }
+    }
+    std::printf("%zu mutations read, %zu refused\n", read, refused);
+    EXPECT_GT(refused, 200u) << "most mutations break the file";
+    EXPECT_GT(read, 10u) << "flips inside values leave a readable file";
 }
