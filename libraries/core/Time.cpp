@@ -134,6 +134,10 @@ void Time::readControls(const Dictionary& dict) {
     writePrecision_ = dict.getOrDefault<int>("writePrecision", 6);
     if (writePrecision_ < 1 || writePrecision_ > 17)
         throw dict.error("writePrecision", "writePrecision must be between 1 and 17 significant digits");
+    // Where a clash of write-time names is reported: at writePrecision, or writeInterval.
+    const Entry* named = dict.peek("writePrecision");
+    namesWhere_ = named ? named->where : dict.peek("writeInterval")->where;
+    namesScope_ = dict.scope();
     runTimeModifiable_ = dict.getOrDefault<bool>("runTimeModifiable", true);
     if (!adjustTimeStep_) deltaT_ = desiredDeltaT_ = fixedDeltaT_;
 }
@@ -267,11 +271,12 @@ void Time::checkWriteNames() const {
     if (!clash) return;
     int needed = writePrecision_ + 1;
     while (needed < 17 && collision(times, value_, timeName_, needed)) ++needed;
-    throw InputError(
-        "writePrecision " + std::to_string(writePrecision_) + " names the write times " + show(clash->first) +
-        " and " + show(clash->second) + " alike ('" + nameOf(clash->second) +
-        "'): the second write would replace the first. Set writePrecision " + std::to_string(needed) +
-        " (or more) in " + controlDictPath_.string() + ", or a larger writeInterval");
+    throw InputError(namesWhere_, namesScope_,
+                     "writePrecision " + std::to_string(writePrecision_) + " names the write times " +
+                         show(clash->first) + " and " + show(clash->second) + " alike ('" +
+                         nameOf(clash->second) +
+                         "'): the second write would replace the first. Set writePrecision " +
+                         std::to_string(needed) + " (or more), or a larger writeInterval");
 }
 
 std::string Time::state() const {

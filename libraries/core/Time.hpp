@@ -109,6 +109,8 @@ private:
     int purgeWrite_ = 0;
     int writePrecision_ = 6;
     bool runTimeModifiable_ = true;
+    SourceLocation namesWhere_;  // writePrecision's entry (writeInterval's when defaulted)
+    std::string namesScope_;
 
     double value_ = 0;
     double deltaT_ = 0;

@@ -238,6 +238,10 @@ TEST(Time, WriteTimesNamedAlikeAreRefusedAtStartUpWithThePrecisionNeeded) {
         "endTime 2; deltaT 0.01; writeControl adjustableRunTime; writeInterval 0.05; writePrecision 2;");
     EXPECT_TRUE(has(what, "writePrecision 2 names the write times")) << what;
     EXPECT_TRUE(has(what, "Set writePrecision 3")) << what;
+    // At writePrecision's line.
+    const std::string line2 = inputError(
+        "endTime 2; deltaT 0.01; writeControl adjustableRunTime; writeInterval 0.05;\nwritePrecision 2;");
+    EXPECT_TRUE(has(line2, "controlDict:2:")) << line2;
     // runTime and a fixed-step timeStep control are foreseen as well.
     EXPECT_TRUE(
         has(inputError("endTime 2; deltaT 0.01; writeControl runTime; writeInterval 0.05; writePrecision 2;"),
