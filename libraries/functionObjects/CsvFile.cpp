@@ -77,6 +77,7 @@ void CsvFile::open(double firstTime) {
 void CsvFile::openSeries(double cutoff) {
     std::vector<std::string> kept;
     std::size_t dropped = 0;
+    fs::path aside;
     if (fs::exists(path_)) {
         std::ifstream in(path_, std::ios::binary);
         if (!in) throw Error("cannot read " + path_.string() + ": " + std::strerror(errno));
@@ -115,6 +116,17 @@ void CsvFile::openSeries(double cutoff) {
                 if (!out_) throw Error("cannot write " + path_.string() + ": " + std::strerror(errno));
                 return;
             }
+            // The rows from the start time on were computed by an earlier run that went on from
+            // there (or from a state since replaced): this run writes its own, and the earlier
+            // ones are copied aside whole first, as the solver moves that run's time directories.
+            if (dropped > 0) {
+                aside = asideName(path_);
+                std::error_code ec;
+                fs::copy_file(path_, aside, ec);
+                if (ec)
+                    throw Error("cannot copy " + path_.string() + " to " + aside.string() + ": " +
+                                ec.message());
+            }
         }
     }
     if (kept.empty()) kept.push_back(header_);
@@ -132,10 +144,10 @@ void CsvFile::openSeries(double cutoff) {
         fs::remove(tmp, ec);
         throw Error("cannot replace " + path_.string() + ": " + ec.message());
     }
-    if (kept.size() > 1 || dropped > 0)
-        Log::info("Continuing " + path_.string() + ": kept its " + std::to_string(kept.size() - 1) +
-                  " rows before t = " + number(cutoff) + ", replacing " + std::to_string(dropped) +
-                  " from then on");
+    if (dropped > 0)
+        Log::info(path_.string() + ": " + std::to_string(kept.size() - 1) + " rows before t = " +
+                  number(cutoff) + " kept, this run's rows follow; the earlier run's file (" +
+                  std::to_string(dropped) + " rows from then on) is kept as " + aside.string());
     out_.open(path_, std::ios::app);
     if (!out_) throw Error("cannot write " + path_.string() + ": " + std::strerror(errno));
 }

@@ -6,11 +6,14 @@
 // object after good ones) leaves every earlier file as it was.
 //
 // A file whose first column is `time` is a time series and continues across runs: when it exists
-// with the same header, its rows before the run's start time are kept (rewritten atomically
-// without the rest, which belongs to an abandoned future) and this run's rows follow. The row at
-// the start time itself is dropped, since the run writes it again. A file whose header differs
-// (columns changed) is moved aside to `<file>.old` (`.old1`, `.old2`, ... when taken), never
-// mixed. Any other file (a profile at one time, a sampled line) is a table, written whole.
+// with the same header, its rows before the run's start time are kept (rewritten atomically,
+// temporary file then rename) and this run's rows follow. The row at the start time itself is
+// not kept, since every function object writes one at the start. Rows from the start time on
+// belong to an earlier run's future, which this run replaces: the whole earlier file is first
+// copied to `<file>.old` (`.old1`, `.old2`, ... when taken). A file whose header differs
+// (columns changed) is moved there instead, never mixed. A row cut off by a killed run (no
+// newline) is dropped. Any other file (a profile at one time, a sampled line) is a table,
+// written whole.
 #include <filesystem>
 #include <fstream>
 #include <limits>

@@ -117,8 +117,9 @@ TEST_F(CsvFileTest, RestartContinuesTheSeriesFromTheStartTime) {
         csv.row({0.25, 70, 80});
     }
     EXPECT_EQ(read(file), "time,a,b\n0,1,2\n0.1,3,4\n0.2,50,60\n0.25,70,80\n");
-    // No temporary left behind.
-    EXPECT_EQ(std::distance(fs::directory_iterator(root), fs::directory_iterator()), 1);
+    // The earlier run's rows that were replaced are not lost; no temporary is left behind.
+    EXPECT_EQ(read(root / "series.csv.old"), earlierRun);
+    EXPECT_EQ(std::distance(fs::directory_iterator(root), fs::directory_iterator()), 2);
 
     // A rerun from the start replaces every row; with the start time taken from the first row
     // when none is given.
@@ -127,6 +128,16 @@ TEST_F(CsvFileTest, RestartContinuesTheSeriesFromTheStartTime) {
         csv.row({0, 9, 9});
     }
     EXPECT_EQ(read(file), "time,a,b\n0,9,9\n");
+    EXPECT_EQ(read(root / "series.csv.old1"), "time,a,b\n0,1,2\n0.1,3,4\n0.2,50,60\n0.25,70,80\n");
+
+    // Only a cut-off row to drop: nothing worth an aside copy.
+    put(file, "time,a,b\n0,1,2\n0.1,3");
+    {
+        CsvFile csv(file, {"time", "a", "b"}, 0.1);
+        csv.row({0.1, 4, 5});
+    }
+    EXPECT_EQ(read(file), "time,a,b\n0,1,2\n0.1,4,5\n");
+    EXPECT_FALSE(fs::exists(root / "series.csv.old2"));
 }
 
 TEST_F(CsvFileTest, ContinuationAppendsToACompleteFileAndKeepsLabelledRows) {
