@@ -150,10 +150,20 @@ void DebrisCloud::write() {
         cloud.row(row);
     }
     csv_->row({context().time().value(), length, width, ratio, hole, double(debrisS.size())});
-    char line[200];
+    // What could not be measured is said so rather than printed as nan.
+    char ratioText[48], holeText[80], line[300];
+    if (std::isnan(ratio))
+        std::snprintf(ratioText, sizeof ratioText, "n/a (no width)");
+    else
+        std::snprintf(ratioText, sizeof ratioText, "%.3f", ratio);
+    if (std::isnan(hole))
+        std::snprintf(holeText, sizeof holeText, "n/a (no target particles %s in the plate)",
+                      dim == 2 ? "on one side of the axis" : "around the axis");
+    else
+        std::snprintf(holeText, sizeof holeText, "%.4g m", hole);
     std::snprintf(line, sizeof line,
-                  "debris length %.4g m, width %.4g m, L/W %.3f, hole diameter %.4g m (%zu particles)",
-                  length, width, ratio, hole, debrisS.size());
+                  "debris length %.4g m, width %.4g m, L/W %s, hole diameter %s (%zu particles)", length,
+                  width, ratioText, holeText, debrisS.size());
     summary_ = {line};
 }
 

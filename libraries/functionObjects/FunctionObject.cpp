@@ -1,6 +1,7 @@
 #include "functionObjects/FunctionObject.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <optional>
 
 namespace mfdyn {
@@ -14,6 +15,15 @@ KeywordSchema functionObjectKeywords() {
                 "steps (timeStep: a whole number, default 1) or time (runTime, adjustableRunTime: required)")
         .greaterThan(0)
         .optional();
+}
+
+std::string relativeErrorText(double value, double exact) {
+    char s[80];
+    if (exact == 0)
+        std::snprintf(s, sizeof s, "n/a (exact value 0; off by %.3g)", value);
+    else
+        std::snprintf(s, sizeof s, "%+.2f%%", 100 * (value - exact) / std::abs(exact));
+    return s;
 }
 
 FunctionObject::FunctionObject(const Dictionary& dict, const std::string& name, const RunContext& context)

@@ -24,6 +24,10 @@ namespace mfdyn {
 // writeControl and writeInterval, appended to every function object's schema.
 KeywordSchema functionObjectKeywords();
 
+// For summaries: "+1.23%", the relative error of `value` against `exact`; against an exact zero a
+// relative error means nothing (it printed +inf% or nan%): "n/a (exact value 0; off by 1.2e-05)".
+std::string relativeErrorText(double value, double exact);
+
 struct ErrorNorm {
     std::string source;  // function object name
     std::string field;

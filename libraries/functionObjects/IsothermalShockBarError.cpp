@@ -178,7 +178,11 @@ void IsothermalShockBarError::write() {
 
     char line[300];
     summary_.clear();
-    double worstPlateau = 0;
+    // Relative errors where the exact value is not 0; against an exact 0 (a plateau at rest) the
+    // absolute error is reported instead. An empty plateau is said so, not folded in as NaN.
+    double worstPlateau = 0, worstAtRest = -1;
+    std::string empty;
+    std::size_t measured = 0;
     for (const Plateau& q : plateaus) {
         const double margin = 0.2 * (q.to - q.from);
         std::vector<double> rs, vs, ps;
@@ -188,13 +192,32 @@ void IsothermalShockBarError::write() {
         const double count = double(rs.size());
         const double r = median(rs), u = median(vs), pr = median(ps);
         plateaus_->row(time, q.name, {r, q.rho, u, q.v, pr, q.p, count});
-        worstPlateau = std::max({worstPlateau, std::abs(r - q.rho) / q.rho, std::abs(u - q.v) / std::abs(q.v),
-                                 std::abs(pr - q.p) / q.p});
+        if (rs.empty()) {
+            empty += std::string(empty.empty() ? "" : ", ") + q.name;
+            continue;
+        }
+        ++measured;
+        for (const auto& [value, exact] : {std::pair{r, q.rho}, std::pair{u, q.v}, std::pair{pr, q.p}}) {
+            if (exact != 0)
+                worstPlateau = std::max(worstPlateau, std::abs(value - exact) / std::abs(exact));
+            else
+                worstAtRest = std::max(worstAtRest, std::abs(value));
+        }
     }
-    std::snprintf(line, sizeof line,
-                  "isothermal shock-bar: %zu plateaus, largest relative error of rho, v, P %.3g%%",
-                  plateaus.size(), 100 * worstPlateau);
-    summary_.push_back(line);
+    if (measured > 0) {
+        std::snprintf(line, sizeof line,
+                      "isothermal shock-bar: %zu plateaus, largest relative error of rho, v, P %.3g%%",
+                      measured, 100 * worstPlateau);
+        summary_.push_back(line);
+    }
+    if (worstAtRest >= 0) {
+        std::snprintf(line, sizeof line,
+                      "isothermal shock-bar: relative error n/a where the exact value is 0; largest absolute "
+                      "value there %.3g",
+                      worstAtRest);
+        summary_.push_back(line);
+    }
+    if (!empty.empty()) summary_.push_back("isothermal shock-bar: no particles in the plateau " + empty);
 
     for (const Front& f : fronts) {
         const double eps = 1e-9;
@@ -209,8 +232,15 @@ void IsothermalShockBarError::write() {
                 best = xc, bestH = 0.5 * (h[k] + h[k + 1]);
         }
         fronts_->row(time, f.name, {best, f.x, bestH});
-        std::snprintf(line, sizeof line, "isothermal shock-bar: %s at %.6g (exact %.6g, %+.2f h)", f.name,
-                      best, f.x, (best - f.x) / bestH);
+        if (std::isnan(best))
+            std::snprintf(
+                line, sizeof line,
+                "isothermal shock-bar: %s not found (no pressure crossing within frontWindow %.3g of "
+                "the exact %.6g)",
+                f.name, frontWindow_, f.x);
+        else
+            std::snprintf(line, sizeof line, "isothermal shock-bar: %s at %.6g (exact %.6g, %+.2f h)", f.name,
+                          best, f.x, (best - f.x) / bestH);
         summary_.push_back(line);
     }
 
@@ -221,9 +251,13 @@ void IsothermalShockBarError::write() {
             if (std::abs(x[k] - contact) < 3 * h[k])
                 worst = std::max(worst, std::abs(p[k] - pStar) / pStar), ++count;
         contact_->row({time, worst, count});
-        std::snprintf(line, sizeof line,
-                      "isothermal shock-bar: pressure within 3h of the interface off P* by %.3g%% at most",
-                      100 * worst);
+        if (count == 0)
+            std::snprintf(line, sizeof line, "isothermal shock-bar: no particles within 3h of the interface");
+        else
+            std::snprintf(
+                line, sizeof line,
+                "isothermal shock-bar: pressure within 3h of the interface off P* by %.3g%% at most",
+                100 * worst);
         summary_.push_back(line);
     }
 

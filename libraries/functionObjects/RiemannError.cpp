@@ -51,6 +51,19 @@ RiemannEquationOfState readEos(const Dictionary& dict) {
     return RiemannEquationOfState::stiffenedGas(v.scalar("gamma"), v.scalar("pRef"));
 }
 
+// The exact solver's checks of a side's state (P above the law's floor, P = c0² (ρ − ρ0) for
+// linearBarotropic), reported at the side's entry in the dictionary rather than without a place.
+void checkState(const Dictionary& dict, const PrimitiveState& state, const RiemannEquationOfState& eos,
+                const std::string& side) {
+    try {
+        eos.check(state, side);
+    } catch (const InputError&) {
+        throw;
+    } catch (const Error& e) {
+        throw dict.error(state.density > 0 ? "pressure" : "density", e.what());
+    }
+}
+
 PrimitiveState readState(const Dictionary& dict) {
     const KeywordValues v = KeywordSchema("functionObject", "riemannError state")
                                 .scalar("density", "kg/m^3", "initial density of the side")
@@ -98,9 +111,19 @@ RiemannError::RiemannError(const KeywordValues& values, const std::string& name,
                                      std::to_string(context.dimension()) + "D");
     const Dictionary& left = values.dictionary("left");
     const Dictionary& right = values.dictionary("right");
-    exact_ = std::make_unique<ShockTubeSolution>(values.scalar("x0"), readState(left),
-                                                 readEos(left.subDict("equationOfState")), readState(right),
-                                                 readEos(right.subDict("equationOfState")));
+    const PrimitiveState leftState = readState(left), rightState = readState(right);
+    const RiemannEquationOfState leftEos = readEos(left.subDict("equationOfState"));
+    const RiemannEquationOfState rightEos = readEos(right.subDict("equationOfState"));
+    checkState(left, leftState, leftEos, "left");
+    checkState(right, rightState, rightEos, "right");
+    try {
+        exact_ = std::make_unique<ShockTubeSolution>(values.scalar("x0"), leftState, leftEos, rightState,
+                                                     rightEos);
+    } catch (const InputError&) {
+        throw;
+    } catch (const Error& e) {  // vacuum, no bracket: a property of both states together
+        throw values.error("right", std::string(e.what()) + " (the states 'left' and 'right' together)");
+    }
     const auto& interval = values.vector("interval");
     if (!(interval[1] > interval[0])) throw values.error("interval", "expected (from to) with from < to");
     from_ = interval[0], to_ = interval[1];
@@ -174,10 +197,17 @@ void RiemannError::write() {
         profile.row({x[i], rho.component(i, 0), s.density, v.component(i, 0), s.velocity, p.component(i, 0),
                      s.pressure});
     }
-    char line[200];
-    std::snprintf(line, sizeof line,
-                  "star pressure %.6g (exact %.6g, %+.2f%%), star velocity %.6g (exact %.6g, %+.2f%%)", pStar,
-                  pExact, 100 * (pStar - pExact) / pExact, uStar, uExact, 100 * (uStar - uExact) / uExact);
+    char line[300];
+    if (ps.empty())
+        std::snprintf(line, sizeof line,
+                      "star state at t = %.6g: no particles in the plateau between the waves (exact star "
+                      "pressure %.6g, velocity %.6g)",
+                      context().time().value(), pExact, uExact);
+    else
+        std::snprintf(line, sizeof line,
+                      "star pressure %.6g (exact %.6g, %s), star velocity %.6g (exact %.6g, %s)", pStar,
+                      pExact, relativeErrorText(pStar, pExact).c_str(), uStar, uExact,
+                      relativeErrorText(uStar, uExact).c_str());
     summary_ = {line};
 }
 
