@@ -23,7 +23,8 @@
 //   fuzzInProcess --root <source tree> --out <dir> [--seed S] [--budget seconds] [--start I]
 //                 [--iterations N] [--input-timeout seconds] [--kinds dict,vtp,pvd,state]
 //   fuzzInProcess --root <source tree> --out <dir> --replay [--expect-error] <file>...
-// (a replayed <file> with a <file>.expect next to it must end in an error containing its text)
+// (a replayed <file> with a <file>.expect next to it must end in an error containing its text, or
+// be accepted, round trips included, when that text is "accepted")
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "core/Time.hpp"
@@ -809,12 +810,21 @@ int replay(Driver& driver, const Options& o) {
             const Outcome r = driver.run(kind, bytes, fs::absolute(file));
             ::alarm(0);
             // <fixture>.expect, when there, holds words the error must contain (what the
-            // fixed reader says about this input).
+            // fixed reader says about this input), or "accepted" for a valid input.
             const fs::path expectFile = file.string() + ".expect";
             std::string expected = fs::exists(expectFile) ? readBytes(expectFile) : std::string();
             while (!expected.empty() && (expected.back() == '\n' || expected.back() == ' '))
                 expected.pop_back();
-            if (r.accepted && o.expectError) {
+            if (expected == "accepted") {
+                // A valid input that once failed a round trip: it must be read, and round-trip.
+                if (!r.accepted) {
+                    std::cout << "FAIL " << file.string() << ": must be accepted (" << expectFile.string()
+                              << "), but: " << r.message << "\n";
+                    ++bad;
+                } else {
+                    std::cout << "ok   " << file.filename().string() << ": accepted, as it must be\n";
+                }
+            } else if (r.accepted && o.expectError) {
                 std::cout << "FAIL " << file.string() << ": accepted, a fixture must end in an error\n";
                 ++bad;
             } else if (!r.accepted && r.message.find(expected) == std::string::npos) {

@@ -372,10 +372,16 @@ class Case:
 
     def run(self, target, kind, data):
         """The failure found, or None."""
-        self.restore()
-        self.apply(target, kind, data)
-        status, out, timed_out = run_limited([str(self.bindir / self.solver), "-case", str(self.case)],
-                                             self.args.run_timeout, self.args.memory_mb, self.env)
+        for attempt in range(3):
+            self.restore()
+            self.apply(target, kind, data)
+            status, out, timed_out = run_limited([str(self.bindir / self.solver), "-case", str(self.case)],
+                                                 self.args.run_timeout, self.args.memory_mb, self.env)
+            # A library being rebuilt while the harness runs (a developer's tree) is not the input's
+            # doing: wait for the build and run again.
+            if "error while loading shared libraries" not in out:
+                break
+            time.sleep(5)
         problem = self.judge(target, status, out, timed_out)
         return problem, status, out
 
