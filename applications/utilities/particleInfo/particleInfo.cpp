@@ -1,6 +1,11 @@
 // particleInfo: what a particle file holds, without opening ParaView: dimension, particle
 // count, particles per region, and for each field its kind and the range of each component
 // (and of the magnitude, for vectors). Used to check a particleGen result or a restart state.
+//
+// Ranges are over the finite values; NaN and infinite values are counted and reported apart
+// (with the first particle holding one), since a min/max reduction skips NaN silently and
+// particleInfo is where one looks for them. The reader has checked the file (sizes, region ids)
+// before anything here allocates from it.
 #include "core/Application.hpp"
 #include "core/Error.hpp"
 #include "core/Parallel.hpp"
@@ -12,6 +17,8 @@
 #include <cstdio>
 #include <iostream>
 #include <limits>
+#include <string>
+#include <vector>
 
 using namespace mfdyn;
 
@@ -35,7 +42,45 @@ void printRange(const std::string& label, const std::string& kind, double lo, do
     std::cout << format("    %-22s %-10s %-24.17g %-24.17g\n", label.c_str(), kind.c_str(), lo, hi);
 }
 
-void printField(const FieldBase& f) {
+// Component c of particle i, or of its magnitude for c == components() of a vector.
+double valueOf(const FieldBase& f, std::size_t i, int c) {
+    if (c < f.components()) return f.component(i, c);
+    double s = 0;
+    for (int k = 0; k < f.components(); ++k) s += f.component(i, k) * f.component(i, k);
+    return std::sqrt(s);
+}
+
+// Finite range of one component; the non-finite values are counted into `bad` (and the first
+// particle with one kept in `first`).
+void printComponent(const FieldBase& f, int c, const std::string& label, const std::string& kind,
+                    std::size_t& bad, std::size_t& first) {
+    const std::size_t n = f.size();
+    const double lo = Reduce::min(n, [&](std::size_t i) {
+        const double v = valueOf(f, i, c);
+        return std::isfinite(v) ? v : std::numeric_limits<double>::infinity();
+    });
+    const double hi = Reduce::max(n, [&](std::size_t i) {
+        const double v = valueOf(f, i, c);
+        return std::isfinite(v) ? v : -std::numeric_limits<double>::infinity();
+    });
+    const std::size_t nonFinite = Reduce::sum<std::size_t>(
+        n, [&](std::size_t i) { return std::size_t(!std::isfinite(valueOf(f, i, c))); });
+    if (nonFinite > 0) {
+        for (std::size_t i = 0; i < std::min(first, n); ++i)
+            if (!std::isfinite(valueOf(f, i, c))) {
+                first = i;
+                break;
+            }
+        bad += nonFinite;
+    }
+    if (nonFinite == n)
+        std::cout << format("    %-22s %-10s %-24s %-24s\n", label.c_str(), kind.c_str(), "(none finite)",
+                            "");
+    else
+        printRange(label, kind, lo, hi);
+}
+
+void printField(const FieldBase& f, std::vector<std::string>& warnings) {
     const std::size_t n = f.size();
     const std::string kind = kindName(f.kind());
     if (f.isInteger()) {
@@ -52,20 +97,19 @@ void printField(const FieldBase& f) {
         return;
     }
     const auto names = componentNames(f.kind(), f.dimension());
+    std::size_t bad = 0, first = n;
     for (int c = 0; c < f.components(); ++c) {
         const std::string label = names[c].empty() ? f.name() : f.name() + "." + names[c];
-        printRange(label, c == 0 ? kind : "",
-                   Reduce::min(n, [&](std::size_t i) { return f.component(i, c); }),
-                   Reduce::max(n, [&](std::size_t i) { return f.component(i, c); }));
+        printComponent(f, c, label, c == 0 ? kind : "", bad, first);
     }
     if (f.kind() == FieldKind::vector) {
-        auto magnitude = [&](std::size_t i) {
-            double s = 0;
-            for (int c = 0; c < f.components(); ++c) s += f.component(i, c) * f.component(i, c);
-            return std::sqrt(s);
-        };
-        printRange("|" + f.name() + "|", "", Reduce::min(n, magnitude), Reduce::max(n, magnitude));
+        // The magnitude of a vector with a NaN component is NaN: already counted above.
+        std::size_t ignored = 0, alsoIgnored = n;
+        printComponent(f, f.components(), "|" + f.name() + "|", "", ignored, alsoIgnored);
     }
+    if (bad > 0)
+        warnings.push_back(format("field '%s' holds %zu NaN or infinite value%s, the first at particle %zu",
+                                  f.name().c_str(), bad, bad == 1 ? "" : "s", first));
 }
 
 int run(const Arguments& args) {
@@ -98,7 +142,12 @@ int run(const Arguments& args) {
             std::cout << format("    %-22s %-10s\n", f->name().c_str(), kindName(f->kind()).c_str());
         return 0;
     }
-    for (const auto& f : particles.fields()) printField(*f);
+    std::vector<std::string> warnings;
+    for (const auto& f : particles.fields()) printField(*f, warnings);
+    if (!warnings.empty()) {
+        std::cout << "\nnon-finite values (left out of the ranges above)\n";
+        for (const auto& w : warnings) std::cout << "    " << w << "\n";
+    }
     return 0;
 }
 
