@@ -56,7 +56,9 @@ std::string usage(const ApplicationInfo& info);
 // registrations are made (-listModels, -describe, mfDoc).
 void loadToolkitLibraries();
 
-// Parses arguments, answers -help/-listModels/-version itself, otherwise runs `body`.
+// Parses arguments, answers -help/-listModels/-version itself, otherwise runs `body`, whose
+// return value is the exit status: 0 for a finished run, 128 + the signal number when a solver
+// was stopped by SIGINT (130) or SIGTERM (143) after writing its state (SolverRun::run).
 // Any mfdyn::Error (or other exception) is printed as "Error: ..." on stderr and gives status 1.
 int runApplication(int argc, char** argv, const ApplicationInfo& info,
                    const std::function<int(const Arguments&)>& body);
