@@ -43,6 +43,9 @@ bool isFloat(Scalar s) {
 // No VTK array mfdyn reads has more than 9 components (a tensor); the bound keeps sizes derived
 // from NumberOfComponents small and their products free of overflow.
 constexpr std::int64_t maxComponents = 64;
+// mfdyn writes a few dozen fields. Fields are found by name in a list, so a header of 10^5
+// arrays (all of them may share one offset) would take 10^10 comparisons: refused instead.
+constexpr std::size_t maxPointArrays = 1024;
 
 // One appended array located in the file and checked against its size.
 struct Array {
@@ -122,6 +125,9 @@ public:
         std::set<std::string> names;
         if (const XmlElement* pointData = piece.findChild("PointData"))
             for (const XmlElement* e : pointData->childrenNamed("DataArray")) {
+                if (arrays.size() == maxPointArrays)
+                    fail("more than " + std::to_string(maxPointArrays) + " PointData arrays (line " +
+                         std::to_string(e->line) + "); mfdyn reads at most that many fields");
                 arrays.push_back(locate(*e, n));
                 // Two arrays of one name would silently overwrite each other.
                 if (!names.insert(arrays.back().name).second)

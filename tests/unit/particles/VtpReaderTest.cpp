@@ -558,3 +558,25 @@ TEST(VtpReader, MutatedFilesAreReadOrRefusedCleanly) {
     EXPECT_GT(refused, 200u) << "most mutations break the file";
     EXPECT_GT(read, 10u) << "flips inside values leave a readable file";
 }
+
+TEST(VtpReader, TooManyArraysAreRefused) {
+    // Fields are looked up by name in a list: 10^5 arrays (which may all share one offset) were a
+    // quadratic wait. 2000 arrays over the same data are refused at the 1025th.
+    ScratchDir dir("manyArrays");
+    ParticleSet<1> p(2);
+    p.scalarField("a");
+    writeVtp(dir.path() / "p.vtp", p, 0.0);
+    std::string file = readFile(dir.path() / "p.vtp");
+    const std::size_t start = file.rfind("<DataArray", file.find("Name=\"a\""));
+    const std::size_t end = file.find('\n', start) + 1;
+    const std::string line = file.substr(start, end - start);
+    std::string copies;
+    for (int i = 0; i < 2000; ++i) {
+        std::string copy = line;
+        copy.replace(copy.find("Name=\"a\""), 8, "Name=\"a" + std::to_string(i) + "\"");
+        copies += copy;
+    }
+    file.insert(end, copies);
+    writeFile(dir.path() / "p.vtp", file);
+    EXPECT_NE(readError(dir.path() / "p.vtp").find("more than 1024 PointData arrays"), std::string::npos);
+}
