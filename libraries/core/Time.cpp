@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <exception>
 #include <optional>
 #include <sstream>
 
@@ -376,12 +377,23 @@ void Time::advance(double dt) {
     timeName_ = nameOf(value_);
     // Writes start-up could not foresee (adjustTimeStep with writeControl timeStep, a changed
     // writeInterval) are checked here, before the directory of an earlier time is replaced.
-    if (writeTime_ && timeName_ == writtenName_)
-        throw RunError("the write at t = " + show(value_) + " (step " + std::to_string(timeIndex_) +
-                       ") would be named '" + timeName_ +
-                       "', like the previous write: it would replace that directory. writePrecision " +
-                       std::to_string(writePrecision_) + " is too low for times this close; raise it in " +
-                       controlDictPath_.string() + " and restart from the latest time");
+    if (!writeTime_ || timeName_ != writtenName_) return;
+    std::string message = "the write at t = " + show(value_) + " (step " + std::to_string(timeIndex_) +
+                          ") would be named '" + timeName_ +
+                          "', like the previous write: it would replace that directory. writePrecision " +
+                          std::to_string(writePrecision_) + " is too low for times this close; raise it in " +
+                          controlDictPath_.string() + " and restart from the latest time";
+    // Called while a failed step is handled (to write the failing state): that failure is what
+    // the user must read, so it leads, and its state is not written.
+    if (const std::exception_ptr failure = std::current_exception()) {
+        try {
+            std::rethrow_exception(failure);
+        } catch (const std::exception& e) {
+            message = std::string(e.what()) + "\n(the failing state is not written: " + message + ")";
+        } catch (...) {
+        }
+    }
+    throw RunError(message);
 }
 
 }  // namespace mfdyn

@@ -279,6 +279,22 @@ TEST(Time, WriteNamedLikeThePreviousOneIsARunErrorNamingWritePrecision) {
         EXPECT_TRUE(has(e.what(), "would be named '0.01'")) << e.what();
         EXPECT_TRUE(has(e.what(), "writePrecision 2 is too low")) << e.what();
     }
+    // While a failed step is handled (SolverRun advances to write the failing state), the
+    // failure's own message leads.
+    time.wrote();
+    try {
+        try {
+            throw RunError("negative density at particle 7");
+        } catch (const RunError&) {
+            time.advance(1e-6);  // "0.01" once more
+        }
+        FAIL() << "no error";
+    } catch (const RunError& e) {
+        EXPECT_EQ(std::string(e.what()).rfind(
+                      "negative density at particle 7\n(the failing state is not written", 0),
+                  0u)
+            << e.what();
+    }
 }
 
 namespace {
