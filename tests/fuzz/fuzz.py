@@ -333,7 +333,6 @@ class Case:
 
     def restore(self):
         if self.case.exists() or self.case.is_symlink():
-            subprocess.run(["chmod", "-R", "u+rwX", str(self.case)], check=False)
             shutil.rmtree(self.case)
         shutil.copytree(self.pristine, self.case, symlinks=True)
 
