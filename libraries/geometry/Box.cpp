@@ -14,6 +14,7 @@ Box::Box(const Dictionary& dict, int dimension) : Shape(dict, dimension) {
         if (!(box_.max[d] > box_.min[d]))
             throw dict.error(
                 "max", "max must exceed min in every direction (direction " + std::to_string(d + 1) + ")");
+    checkBounds(dict, "max");
 }
 
 bool Box::inside(const double* x) const {

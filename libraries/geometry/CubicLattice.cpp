@@ -14,12 +14,16 @@ KeywordSchema CubicLattice::keywords() {
 CubicLattice::CubicLattice(const Dictionary& dict, int dimension)
     : Lattice(keywords().read(dict), dimension) {}
 
+std::array<double, 3> CubicLattice::siteCounts(const BoundingBox& box) const {
+    std::array<double, 3> count{1, 1, 1};
+    for (int d = 0; d < dimension(); ++d) count[d] = rowCount(box.max[d] - box.min[d], spacing());
+    return count;
+}
+
 std::vector<double> CubicLattice::sites(const BoundingBox& box) const {
     const int dim = dimension();
     const double dx = spacing();
-    std::array<long, 3> count{1, 1, 1};
-    for (int d = 0; d < dim; ++d)
-        count[d] = std::max(1L, long(std::ceil((box.max[d] - box.min[d]) / dx - 1e-9)));
+    const std::array<long, 3> count = checkedSiteCounts(box);
     std::vector<double> out;
     out.reserve(std::size_t(count[0] * count[1] * count[2]) * dim);
     for (long k = 0; k < count[2]; ++k)

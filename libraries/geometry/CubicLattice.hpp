@@ -11,6 +11,7 @@ public:
 
 protected:
     std::vector<double> sites(const BoundingBox& box) const override;
+    std::array<double, 3> siteCounts(const BoundingBox& box) const override;
 };
 
 }  // namespace mfdyn

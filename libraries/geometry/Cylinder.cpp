@@ -17,13 +17,13 @@ Cylinder::Cylinder(const Dictionary& dict, int dimension)
     : Shape(dict, dimension),
       point1_(readPoint(dict, "point1")),
       point2_(readPoint(dict, "point2")),
-      radius_(dict.get<double>("radius")) {
+      radius_(readLength(dict, "radius")) {
     if (dimension < 2) throw dict.error("type", "a cylinder needs a 2D or 3D case; use a box in 1D");
-    if (!(radius_ > 0)) throw dict.error("radius", "radius must be positive");
     for (int d = 0; d < 3; ++d) length_ += (point2_[d] - point1_[d]) * (point2_[d] - point1_[d]);
     length_ = std::sqrt(length_);
     if (!(length_ > 0)) throw dict.error("point2", "point1 and point2 coincide: the cylinder has no axis");
     for (int d = 0; d < 3; ++d) axis_[d] = (point2_[d] - point1_[d]) / length_;
+    checkBounds(dict, "radius");
 }
 
 bool Cylinder::inside(const double* x) const {

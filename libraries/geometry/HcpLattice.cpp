@@ -19,16 +19,19 @@ HcpLattice::HcpLattice(const Dictionary& dict, int dimension) : Lattice(keywords
     if (dimension != 3) throw dict.error("type", "the hcp lattice is 3D; use hexagonal in 2D or cubic in 1D");
 }
 
+std::array<double, 3> HcpLattice::siteCounts(const BoundingBox& box) const {
+    const double dx = spacing();
+    const double dy = dx * std::sqrt(3.0) / 2;
+    const double dz = dx * std::sqrt(2.0 / 3.0);
+    return {rowCount(box.max[0] - box.min[0], dx), rowCount(box.max[1] - box.min[1], dy),
+            rowCount(box.max[2] - box.min[2], dz)};
+}
+
 std::vector<double> HcpLattice::sites(const BoundingBox& box) const {
     const double dx = spacing();
     const double dy = dx * std::sqrt(3.0) / 2;
     const double dz = dx * std::sqrt(2.0 / 3.0);
-    const auto count = [](double length, double step) {
-        return std::max(1L, long(std::ceil(length / step - 1e-9)));
-    };
-    const long nx = count(box.max[0] - box.min[0], dx);
-    const long ny = count(box.max[1] - box.min[1], dy);
-    const long nz = count(box.max[2] - box.min[2], dz);
+    const auto [nx, ny, nz] = checkedSiteCounts(box);
     std::vector<double> out;
     out.reserve(std::size_t(nx * ny * nz) * 3);
     for (long k = 0; k < nz; ++k) {

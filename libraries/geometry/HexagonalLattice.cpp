@@ -20,11 +20,16 @@ HexagonalLattice::HexagonalLattice(const Dictionary& dict, int dimension)
     if (dimension != 2) throw dict.error("type", "the hexagonal lattice is 2D; use hcp in 3D or cubic in 1D");
 }
 
+std::array<double, 3> HexagonalLattice::siteCounts(const BoundingBox& box) const {
+    const double dy = spacing() * std::sqrt(3.0) / 2;
+    return {rowCount(box.max[0] - box.min[0], spacing()), rowCount(box.max[1] - box.min[1], dy), 1};
+}
+
 std::vector<double> HexagonalLattice::sites(const BoundingBox& box) const {
     const double dx = spacing();
     const double dy = dx * std::sqrt(3.0) / 2;
-    const long rows = std::max(1L, long(std::ceil((box.max[1] - box.min[1]) / dy - 1e-9)));
-    const long columns = std::max(1L, long(std::ceil((box.max[0] - box.min[0]) / dx - 1e-9)));
+    const auto count = checkedSiteCounts(box);
+    const long columns = count[0], rows = count[1];
     std::vector<double> out;
     out.reserve(std::size_t(rows * columns) * 2);
     for (long j = 0; j < rows; ++j)

@@ -1,6 +1,9 @@
 #include "geometry/Lattice.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <random>
+#include <sstream>
 
 namespace mfdyn {
 
@@ -34,6 +37,30 @@ std::vector<double> Lattice::points(const BoundingBox& box) const {
         for (double& x : p) x += uniform(engine);
     }
     return p;
+}
+
+double Lattice::rowCount(double length, double step) {
+    return std::max(1.0, std::ceil(length / step - 1e-9));
+}
+
+double Lattice::pointCount(const BoundingBox& box) const {
+    const auto n = siteCounts(box);
+    return n[0] * n[1] * n[2];
+}
+
+std::array<long, 3> Lattice::checkedSiteCounts(const BoundingBox& box) const {
+    const auto n = siteCounts(box);
+    const double total = n[0] * n[1] * n[2];
+    if (!(total <= 9007199254740992.0)) {  // 2^53; also catches inf and NaN
+        std::ostringstream message;
+        message << "a lattice of spacing " << spacing_ << " m over the box from (";
+        for (int d = 0; d < dimension_; ++d) message << (d ? " " : "") << box.min[d];
+        message << ") to (";
+        for (int d = 0; d < dimension_; ++d) message << (d ? " " : "") << box.max[d];
+        message << ") would have " << total << " points; give a larger spacing";
+        throw InputError(message.str());
+    }
+    return {long(n[0]), long(n[1]), long(n[2])};
 }
 
 std::vector<double> Lattice::pointVolumes(const BoundingBox&, const std::vector<double>& points) const {

@@ -15,6 +15,7 @@
 #include "core/Registry.hpp"
 #include "geometry/Shape.hpp"
 
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -44,6 +45,10 @@ public:
     // pointVolume() for every point; the nodal lattice gives its boundary points their
     // tributary (dual-cell) volumes.
     virtual std::vector<double> pointVolumes(const BoundingBox& box, const std::vector<double>& points) const;
+    // How many points points(box) returns, counted in floating point without allocating, so that
+    // a spacing far too small for the box gives a huge number (particleGen refuses it before
+    // generating) rather than an overflowed integer.
+    double pointCount(const BoundingBox& box) const;
 
 protected:
     // From the values of commonKeywords(): spacing (0 when not given: nodal with `points`),
@@ -55,6 +60,15 @@ protected:
 
     // The regular lattice sites covering `box`, in a fixed order.
     virtual std::vector<double> sites(const BoundingBox& box) const = 0;
+    // The number of sites per direction that sites(box) lays out (1 in unused directions), as reals.
+    virtual std::array<double, 3> siteCounts(const BoundingBox& box) const = 0;
+    // siteCounts(box) as integers to allocate with; InputError when the product is not finite or
+    // beyond 2^53 (where a count is no longer exact in a double, far beyond any memory), instead of
+    // the undefined conversion of a huge real to long.
+    std::array<long, 3> checkedSiteCounts(const BoundingBox& box) const;
+    // Sites along `length` one `step` apart, cell-centred: ceil(L/step − 1e-9), at least 1 (the
+    // 1e-9 keeps a length that is a whole number of steps up to round-off from gaining a row).
+    static double rowCount(double length, double step);
 
 private:
     int dimension_;

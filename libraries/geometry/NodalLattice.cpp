@@ -54,10 +54,12 @@ NodalLattice::NodalLattice(const Dictionary& dict, const KeywordValues& v, int d
                              "expected " + std::to_string(dimension) + " node counts, one per direction");
         for (std::size_t d = 0; d < n.size(); ++d) {
             const bool used = int(d) < dimension;
-            if (used && !(n[d] >= 2 && n[d] == std::floor(n[d])))
-                throw dict.error("points", "node counts are whole numbers >= 2 (both faces), found " +
-                                               std::to_string(n[d]) + " in direction " +
-                                               std::to_string(d + 1));
+            // At most 2^31 per direction: a count beyond that could not be allocated anyway, and
+            // below it the conversion to long is exact.
+            if (used && !(n[d] >= 2 && n[d] == std::floor(n[d]) && n[d] <= 2147483648.0))
+                throw dict.error("points",
+                                 "node counts are whole numbers from 2 (both faces) to 2^31, found " +
+                                     std::to_string(n[d]) + " in direction " + std::to_string(d + 1));
             if (!used && n[d] != 1 && n[d] != 0)
                 throw dict.error("points", "direction " + std::to_string(d + 1) + " is not used in a " +
                                                std::to_string(dimension) + "D case: give 1 or leave it out");
@@ -66,12 +68,16 @@ NodalLattice::NodalLattice(const Dictionary& dict, const KeywordValues& v, int d
     }
 }
 
-std::array<long, 3> NodalLattice::counts(const BoundingBox& box) const {
-    std::array<long, 3> n{1, 1, 1};
+std::array<double, 3> NodalLattice::siteCounts(const BoundingBox& box) const {
+    std::array<double, 3> n{1, 1, 1};
     for (int d = 0; d < dimension(); ++d)
-        n[d] = points_[d] > 0 ? points_[d]
-                              : std::max(2L, std::lround((box.max[d] - box.min[d]) / spacing()) + 1);
+        n[d] = points_[d] > 0 ? double(points_[d])
+                              : std::max(2.0, std::round((box.max[d] - box.min[d]) / spacing()) + 1);
     return n;
+}
+
+std::array<long, 3> NodalLattice::counts(const BoundingBox& box) const {
+    return checkedSiteCounts(box);
 }
 
 std::array<double, 3> NodalLattice::spacings(const BoundingBox& box) const {

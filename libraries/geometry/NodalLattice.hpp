@@ -31,6 +31,7 @@ public:
 
 protected:
     std::vector<double> sites(const BoundingBox& box) const override;
+    std::array<double, 3> siteCounts(const BoundingBox& box) const override;
 
 private:
     NodalLattice(const Dictionary& dict, const KeywordValues& v, int dimension);

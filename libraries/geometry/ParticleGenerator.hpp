@@ -9,13 +9,28 @@
 //             shape   { type box; min (0 0); max (0.01 0.01); }
 //             lattice { type cubic; spacing 1e-3; }
 //             density 2700;                   // kg/m^3: mass = density × the point's lattice volume
-//             fields  { velocity (0 -100); }  // uniform initial values of any scalar or vector field
+//             fields  { velocity (0 -100); }  // uniform initial values (known fields below)
 //             override yes;                   // take over earlier regions' particles in this shape (default)
 //             mass    uniformSpacing;         // or equalMass (below); default uniformSpacing
 //             material aluminium;             // optional; stored in the integer field `material`
 //             angularVelocity { omega (0 0 10); centre (0 0 0); }  // optional; rad/s, adds ω × (x − c)
 //         }
 //     }
+//     userFields (myField);                   // optional: fields read by a model of your own
+//
+// `fields` takes the initial fields that the toolkit's models read (knownFieldsHelp(), printed by
+// `particleGen -help`): velocity (vector), pressure, specificInternalEnergy, temperature,
+// smoothingLength, plasticStrain (scalars). Any other name is an error with a did-you-mean, since
+// a misspelt `velocty` would be written as a field no model reads; a user library's own field is
+// declared in the top-level `userFields` list. position, globalId, region, mass, material and
+// density are set by particleGen itself. Every value must be finite.
+//
+// Checks before anything is allocated: each region's lattice points over its shape's bounding
+// box are counted (Lattice::pointCount) and, at 200 bytes per particle, compared with the free
+// memory (MemAvailable in /proc/meminfo, or a cgroup's limit); a region that would not fit is an
+// error naming it, the estimated count and the spacing. A region left with no particle (none
+// inside its shape, or all taken over by later regions) is an error, and so is a particle
+// volume or mass that underflows to zero, overflows, or is subnormal.
 //
 // Two ways to fill regions of different density (sph-impact.md §4, "Initial lattices"):
 //  - `mass uniformSpacing` (default), scheme (b): every region uses its lattice as given and
@@ -55,14 +70,19 @@ struct RegionReport {
 class ParticleGenerator {
 public:
     explicit ParticleGenerator(const Dictionary& particleGenDict);
+    // Throws InputError for bad input, Error when memory runs out.
     std::unique_ptr<ParticleSetBase> generate();
     const std::vector<RegionReport>& report() const { return report_; }
     std::string reportTable() const;
+    // The fields `fields` accepts, one per line with their kind and meaning (for -help).
+    static std::string knownFieldsHelp();
 
 private:
+    std::unique_ptr<ParticleSetBase> build();
     const Dictionary& dict_;
     int dimension_;
     std::vector<RegionReport> report_;
+    std::string current_;  // the region being generated, for out-of-memory messages
 };
 
 }  // namespace mfdyn

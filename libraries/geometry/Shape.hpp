@@ -33,9 +33,19 @@ public:
     // The exact volume (length in 1D, area in 2D), when known in closed form.
     virtual std::optional<double> volume() const { return std::nullopt; }
 
+    // The largest coordinate or length accepted: the square of a distance between two points
+    // within it, (2 × 1e150)², is still a finite double.
+    static constexpr double maxCoordinate = 1e150;
+
 protected:
-    // Reads a point with at least `dimension` components (extra ones must be zero).
+    // Reads a point with at least `dimension` components (extra ones must be zero), each within
+    // ±maxCoordinate.
     std::array<double, 3> readPoint(const Dictionary& dict, const std::string& key) const;
+    // A radius or length: positive and at most maxCoordinate, else an InputError at `key`.
+    double readLength(const Dictionary& dict, const std::string& key) const;
+    // InputError at `key` when bounds() is not finite (a centre near 1e308 plus a radius overflows),
+    // so that no lattice is asked to cover an infinite box.
+    void checkBounds(const Dictionary& dict, const std::string& key) const;
 
 private:
     int dimension_;

@@ -11,8 +11,8 @@
 namespace mfdyn {
 
 Sphere::Sphere(const Dictionary& dict, int dimension)
-    : Shape(dict, dimension), centre_(readPoint(dict, "centre")), radius_(dict.get<double>("radius")) {
-    if (!(radius_ > 0)) throw dict.error("radius", "radius must be positive");
+    : Shape(dict, dimension), centre_(readPoint(dict, "centre")), radius_(readLength(dict, "radius")) {
+    checkBounds(dict, "radius");
 }
 
 bool Sphere::inside(const double* x) const {

@@ -26,6 +26,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <array>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -117,6 +118,12 @@ StlSurface::StlSurface(const Dictionary& dict, int dimension)
     std::vector<std::array<Mesh::Vertex_index, 3>> faces;
     faces.reserve(triangles.size());
     for (const auto& t : triangles) {
+        // A binary file's float32 can hold inf or NaN, which no inside test can classify.
+        for (const auto& corner : t)
+            for (double c : corner)
+                if (!std::isfinite(c))
+                    throw dict.error("file", name + ": triangle " + std::to_string(faces.size() + 1) +
+                                                 " has a non-finite vertex coordinate");
         std::array<Mesh::Vertex_index, 3> f;
         for (int v = 0; v < 3; ++v) {
             auto [it, added] = vertices.try_emplace(t[v]);

@@ -12,7 +12,15 @@
 
 int main(int argc, char** argv) {
     const mfdyn::ApplicationInfo info{
-        "particleGen", "Generate particles from system/particleGenDict into 0/particles.vtp.", {}, {}, true};
+        "particleGen",
+        "Generate particles from system/particleGenDict into 0/particles.vtp.\n\n"
+        "Initial fields a region's `fields { ... }` may set (any other name is an error):\n" +
+            mfdyn::ParticleGenerator::knownFieldsHelp() +
+            "A field that a model of your own reads is declared at the top of particleGenDict with\n"
+            "`userFields (name1 name2);`. See libraries/geometry/ParticleGenerator.hpp.",
+        {},
+        {},
+        true};
     return mfdyn::runApplication(argc, argv, info, [](const mfdyn::Arguments& args) {
         using namespace mfdyn;
         Case runCase(args.caseDir());

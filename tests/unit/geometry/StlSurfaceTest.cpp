@@ -8,6 +8,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <numbers>
 
 using namespace mfdyn;
@@ -124,4 +125,27 @@ TEST(StlSurface, InconsistentOrientationAndOtherErrors) {
     EXPECT_THROW(stl(dataDir + "/noSuchFile.stl"), InputError);
     EXPECT_THROW(shape("type stlSurface; file \"" + dataDir + "/cube.stl\";", 2), InputError);
     EXPECT_THROW(shape("type stlSurface;", 3), InputError);
+}
+
+// A binary STL's float32 can hold inf or NaN. A closed cube with the corner (1 1 1) moved to
+// x = inf was accepted, with an infinite bounding box that no lattice can cover.
+TEST(StlSurface, NonFiniteVertexIsAnErrorNamingTheFile) {
+    for (const float bad :
+         {std::numeric_limits<float>::infinity(), std::numeric_limits<float>::quiet_NaN()}) {
+        auto triangles = cubeTriangles();
+        for (auto& t : triangles)
+            for (auto& v : t)
+                if (v == std::array<float, 3>{1, 1, 1}) v[0] = bad;
+        const auto path = writeBinary("mfdynGeometryTestInfiniteCube.stl", triangles);
+        try {
+            stl(path);
+            ADD_FAILURE() << "a vertex at x = " << bad << " was accepted";
+        } catch (const InputError& e) {
+            const std::string message = e.what();
+            EXPECT_NE(message.find("mfdynGeometryTestInfiniteCube.stl: triangle "), std::string::npos)
+                << message;
+            EXPECT_NE(message.find("has a non-finite vertex coordinate"), std::string::npos) << message;
+        }
+        std::filesystem::remove(path);
+    }
 }
