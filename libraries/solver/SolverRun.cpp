@@ -104,21 +104,9 @@ void SolverRun::prepareOutputs() {
     auto inLater = [&](const std::string& file) {
         return laterSet.count(file.substr(0, file.find('/'))) > 0;
     };
-    if (!later.empty()) {
-        const fs::path aside = moveAsideTimeDirectories(case_.root(), later);
-        // Their own index beside them, so the abandoned series still opens in ParaView.
-        PvdIndex abandoned(aside / "particles.pvd");
-        for (const auto& e : pvd_->entries())
-            if (inLater(e.file)) abandoned.add(e.time, e.file);
-        if (!abandoned.entries().empty()) abandoned.write();
-        std::string names;
-        for (const auto& n : later) names += " " + n;
-        Log::info("Moved " + std::to_string(later.size()) + " time directories later than the start time " +
-                  startTimeName_ + " (" + names.substr(1) + "), left by an earlier run, to " +
-                  aside.string() + "/");
-    }
     // The index keeps what precedes the start's exact time (from its state on a restart: the
-    // directory name is rounded to writePrecision and may be below it) and nothing in a moved time.
+    // directory name is rounded to writePrecision and may be below it) and nothing in a moved
+    // time. It is rewritten before the move, so that it never points into a moved directory.
     PvdIndex pvd(pvd_->file());
     bool listsStart = false;
     for (const auto& e : pvd_->entries()) {
@@ -128,6 +116,21 @@ void SolverRun::prepareOutputs() {
     }
     if (!listsStart) pvd.add(time_->value(), startTimeName_ + "/" + particleFileName);
     if (pvd.entries().size() != pvd_->entries().size() || !listsStart) pvd.write();
+    if (!later.empty()) {
+        const fs::path aside = moveAsideTimeDirectories(case_.root(), later);
+        // Their own index beside them, so the abandoned series still opens in ParaView.
+        PvdIndex abandoned(aside / "particles.pvd");
+        for (const auto& e : pvd_->entries())
+            if (inLater(e.file)) abandoned.add(e.time, e.file);
+        if (!abandoned.entries().empty()) abandoned.write();
+        // The earliest ten: a long run can leave thousands.
+        std::string names;
+        for (std::size_t k = 0; k < later.size() && k < 10; ++k) names += " " + later[k];
+        if (later.size() > 10) names += " and " + std::to_string(later.size() - 10) + " more";
+        Log::info("Moved " + std::to_string(later.size()) + " time directories later than the start time " +
+                  startTimeName_ + " (" + names.substr(1) + "), left by an earlier run, to " +
+                  aside.string() + "/");
+    }
     *pvd_ = std::move(pvd);
 }
 
