@@ -71,10 +71,11 @@ std::string lower(std::string s) {
 }
 
 // The closest known or user field to a name no model reads: by edit distance, else the one name
-// that contains it ignoring case (`internalEnergy` -> `specificInternalEnergy`).
+// that contains it ignoring case (`internalEnergy` -> `specificInternalEnergy`), for names of 4
+// letters or more (a short one is contained in too many).
 std::string suggestField(const std::string& name, const std::vector<std::string>& candidates) {
     std::string guess = closestMatch(name, candidates);
-    if (!guess.empty()) return guess;
+    if (!guess.empty() || name.size() < 4) return guess;
     for (const auto& c : candidates)
         if (lower(c).find(lower(name)) != std::string::npos ||
             lower(name).find(lower(c)) != std::string::npos)
@@ -133,8 +134,8 @@ double bytesPerSite(int dim) {
 }
 
 // A particle volume or mass has to be a normal positive double: zero (underflow) gives
-// particles of no mass, inf or NaN poisons every sum, and a subnormal one has no finite
-// reciprocal (a kernel of h ~ V^(1/dim) divides by it).
+// particles of no mass, inf or NaN poisons every sum, and a subnormal one has lost precision and,
+// below 5.6e-309, an infinite reciprocal (a solver divides by m and by V = m/rho).
 bool normalPositive(double x) {
     return x >= std::numeric_limits<double>::min() && x <= std::numeric_limits<double>::max();
 }

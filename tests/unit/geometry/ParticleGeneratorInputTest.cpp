@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <limits>
+#include <new>
 #include <string>
 
 using namespace mfdyn;
@@ -46,6 +47,26 @@ void expectContains(const std::string& message, const std::string& part) {
 }
 
 }  // namespace
+
+namespace mfdyn {
+namespace {
+
+// A shape whose inside test runs out of memory, as a huge region can after the count check
+// passed (memory taken by another process meanwhile).
+class OutOfMemoryShape final : public Shape {
+public:
+    OutOfMemoryShape(const Dictionary& dict, int dimension) : Shape(dict, dimension) {}
+    bool inside(const double*) const override { throw std::bad_alloc(); }
+    BoundingBox bounds() const override {
+        BoundingBox b;
+        b.max = {1, 1, 1};
+        return b;
+    }
+};
+MFDYN_REGISTER(Shape, OutOfMemoryShape, "testOutOfMemory", "geometryTests only: inside() throws bad_alloc");
+
+}  // namespace
+}  // namespace mfdyn
 
 // The parser may refuse 1e400 itself; here inf and NaN are put into the parsed token, as a value
 // from elsewhere could be. Whether the dictionary's typed read or particleGen's own check refuses
@@ -160,6 +181,21 @@ TEST(ParticleGeneratorInput, RegionLeftWithoutParticlesIsRefused) {
         " density 1000; } }");
     expectContains(m, "system/particleGenDict:1:24: in 'regions': keyword 'a'");
     expectContains(m, "region 'a' has no particles left: the later region 'b' took them all");
+}
+
+// std::bad_alloc reached the user as "Error (internal): std::bad_alloc".
+TEST(ParticleGeneratorInput, OutOfMemoryIsAnErrorNamingTheRegion) {
+    const Dictionary dict =
+        Dictionary::parse(oneRegion(2, "type testOutOfMemory;", "type cubic; spacing 0.1;"), "test");
+    ParticleGenerator gen(dict);
+    try {
+        gen.generate();
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        ADD_FAILURE() << "an input error: " << e.what();
+    } catch (const Error& e) {
+        expectContains(e.what(), "out of memory while generating particles in region 'a'");
+    }
 }
 
 // `velocty` was written as a new field, leaving the block at rest.
