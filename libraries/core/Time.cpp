@@ -121,6 +121,22 @@ void Time::readControls(const Dictionary& dict) {
     adjustTimeStep_ = dict.getOrDefault<bool>("adjustTimeStep", false);
     maxCo_ = positive(dict, "maxCo", dict.getOrDefault<double>("maxCo", 1.0));
     maxDeltaT_ = positive(dict, "maxDeltaT", dict.getOrDefault<double>("maxDeltaT", 1e300));
+    // A step so small that the run could not end (1e10 steps over the run by default) is a
+    // collapse, not a slow run: huge accelerations or a tiny length scale used to run forever.
+    // minDeltaT 0 switches the check off.
+    if (dict.found("minDeltaT")) {
+        minDeltaT_ = finite(dict, "minDeltaT", dict.get<double>("minDeltaT"));
+        if (minDeltaT_ < 0)
+            throw dict.error("minDeltaT", "minDeltaT must be >= 0 (0: no limit), found " + show(minDeltaT_));
+    } else {
+        minDeltaT_ = 1e-10 * (endTime_ - startTime_);
+        dict.noteDefault("minDeltaT " + show(minDeltaT_) + " (1e-10 of endTime - startTime)");
+    }
+    if (!adjustTimeStep_ && fixedDeltaT_ < minDeltaT_)
+        throw dict.error("deltaT", "deltaT " + show(fixedDeltaT_) + " is below minDeltaT " +
+                                       show(minDeltaT_) + ": the run would take " +
+                                       show(std::ceil((endTime_ - startTime_) / fixedDeltaT_)) +
+                                       " steps; raise deltaT, or set minDeltaT (0: no limit)");
     writeControl_ = readChoice<WriteControl>(dict, "writeControl", WriteControl::timeStep,
                                              {{"timeStep", WriteControl::timeStep},
                                               {"runTime", WriteControl::runTime},
@@ -317,6 +333,16 @@ double Time::chooseDeltaT(const TimeStepVote& stable) {
         // Grow by at most 20% a step: a sudden jump would let a transient outrun the vote.
         const double previous = desiredDeltaT_ > 0 ? desiredDeltaT_ : fixedDeltaT_;
         dt = std::min({stable.deltaT, maxDeltaT_, 1.2 * previous});
+        if (dt < minDeltaT_) {
+            std::ostringstream s;
+            s << "the time step collapsed: dt = " << dt << " (" << stable.reason << ") at time " << timeName_
+              << ", step " << timeIndex_ << ", is below minDeltaT " << minDeltaT_
+              << "; at this step the run would need " << (endTime_ - value_) / dt
+              << " more steps. Look for what makes the step so small (a huge "
+              << "acceleration or speed, a tiny length scale), or set minDeltaT in "
+              << controlDictPath_.string() << " (0: no limit)";
+            throw RunError(s.str());
+        }
     } else {
         dt = fixedDeltaT_;
         if (dt > stable.deltaT * (1 + 1e-12)) {

@@ -9,6 +9,8 @@
 //     adjustTimeStep  yes;            // dt from the solver's stability vote, limited by maxCo, maxDeltaT
 //     maxCo           0.3;
 //     maxDeltaT       1;
+//     minDeltaT       1e-10;          // a smaller adjusted step is a collapse: RunError (default
+//                                     // 1e-10 of endTime - startTime; 0: no limit)
 //     writeControl    adjustableRunTime;  // timeStep | runTime | adjustableRunTime
 //     writeInterval   0.1;
 //     purgeWrite      0;              // keep only the newest N written times (0: keep all)
@@ -104,6 +106,7 @@ private:
     bool adjustTimeStep_ = false;
     double maxCo_ = 1;
     double maxDeltaT_ = 0;
+    double minDeltaT_ = 0;
     WriteControl writeControl_ = WriteControl::timeStep;
     double writeInterval_ = 1;
     int purgeWrite_ = 0;

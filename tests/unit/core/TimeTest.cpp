@@ -365,3 +365,34 @@ TEST(Time, FailedReReadKeepsEveryOldControl) {
     EXPECT_EQ(time.writePrecision(), 6);
     fs::remove_all(dir);
 }
+
+// Issue 14 (fuzz fixtures hugeGravityStepCollapse, tinyLengthScale): an adjusted step that
+// shrinks without bound ran forever. Below minDeltaT (by default 1e-10 of the run's length) it is
+// a RunError naming the limiting vote and the steps it would take.
+TEST(Time, CollapsedStepIsARunErrorBelowMinDeltaT) {
+    Time time =
+        makeTime("endTime 1; deltaT 1e-3; adjustTimeStep yes; writeControl timeStep; writeInterval 100;");
+    EXPECT_NEAR(time.chooseDeltaT({2e-10, "acceleration"}), 2e-10, 1e-25);  // small, but it can end
+    try {
+        time.chooseDeltaT({5e-11, "acceleration"});
+        FAIL() << "no error";
+    } catch (const RunError& e) {
+        EXPECT_TRUE(has(e.what(), "the time step collapsed: dt = 5e-11 (acceleration)")) << e.what();
+        EXPECT_TRUE(has(e.what(), "below minDeltaT 1e-10")) << e.what();
+        EXPECT_TRUE(has(e.what(), "2e+10 more steps")) << e.what();
+    }
+    // Set explicitly, or switched off with 0.
+    Time strict = makeTime(
+        "endTime 1; deltaT 1e-3; adjustTimeStep yes; minDeltaT 1e-6; writeControl timeStep; writeInterval "
+        "100;");
+    EXPECT_THROW(strict.chooseDeltaT({1e-7, "vote"}), RunError);
+    Time off = makeTime(
+        "endTime 1; deltaT 1e-3; adjustTimeStep yes; minDeltaT 0; writeControl timeStep; writeInterval 100;");
+    EXPECT_EQ(off.chooseDeltaT({1e-20, "vote"}), 1e-20);
+    // A fixed deltaT below it is refused at start-up, at deltaT's line.
+    const std::string fixed = inputError("endTime 1;\ndeltaT 1e-12; writeInterval 1;");
+    EXPECT_TRUE(has(fixed, "controlDict:2:")) << fixed;
+    EXPECT_TRUE(has(fixed, "the run would take 1000000000000 steps")) << fixed;
+    EXPECT_TRUE(
+        has(inputError("endTime 1; deltaT 0.1; writeInterval 1; minDeltaT -1;"), "minDeltaT must be >= 0"));
+}
