@@ -288,6 +288,34 @@ def set_end_time(controldict, value):
     controldict.write_text(text)
 
 
+def build_stamp(bindir):
+    """(name, size, mtime) of the programs and libraries of the build, to notice a rebuild."""
+    stamp = []
+    for d in (Path(bindir), Path(bindir).parent / "lib"):
+        if d.is_dir():
+            for p in sorted(d.iterdir()):
+                try:
+                    st = p.stat()
+                    stamp.append((p.name, st.st_size, st.st_mtime_ns))
+                except OSError:
+                    stamp.append((p.name, -1, -1))
+    return stamp
+
+
+def build_changing(bindir, before):
+    """Whether the build changed since `before`; if so, returns once it has been still for 10 s."""
+    if build_stamp(bindir) == before:
+        return False
+    print("fuzz.processes: the build changed under the run; waiting for it to settle", flush=True)
+    last, still = build_stamp(bindir), 0
+    while still < 10:
+        time.sleep(2)
+        now = build_stamp(bindir)
+        still = still + 2 if now == last else 0
+        last = now
+    return True
+
+
 def limits(memory_mb):
     def apply():
         os.setsid()
@@ -297,17 +325,25 @@ def limits(memory_mb):
     return apply
 
 
-def run_limited(cmd, timeout, memory_mb, env):
-    """(status, output, timed out); the process group is killed at the timeout."""
+def run_limited(cmd, timeout, memory_mb, env, grace=10):
+    """(status, output, how): how is "finished", "stopped" (still running at the timeout, then
+    ended within `grace` seconds of SIGTERM) or "hung" (killed: SIGTERM did not end it)."""
     p = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                          env=env, preexec_fn=limits(memory_mb))
     try:
         out, _ = p.communicate(timeout=timeout)
-        return p.returncode, out.decode(errors="replace"), False
+        return p.returncode, out.decode(errors="replace"), "finished"
+    except subprocess.TimeoutExpired:
+        pass
+    # A run still stepping is stopped the way a user stops it; one that does not answer is hung.
+    p.send_signal(signal.SIGTERM)
+    try:
+        out, _ = p.communicate(timeout=grace)
+        return p.returncode, out.decode(errors="replace"), "stopped"
     except subprocess.TimeoutExpired:
         os.killpg(p.pid, signal.SIGKILL)
         out, _ = p.communicate()
-        return None, out.decode(errors="replace"), True
+        return None, out.decode(errors="replace"), "hung"
 
 
 class Case:
@@ -374,15 +410,16 @@ class Case:
         for attempt in range(3):
             self.restore()
             self.apply(target, kind, data)
-            status, out, timed_out = run_limited([str(self.bindir / self.solver), "-case", str(self.case)],
-                                                 self.args.run_timeout, self.args.memory_mb, self.env)
-            # A library being rebuilt while the harness runs (a developer's tree) is not the input's
-            # doing: wait for the build and run again.
-            if "error while loading shared libraries" not in out:
+            built = build_stamp(self.bindir)
+            status, out, how = run_limited([str(self.bindir / self.solver), "-case", str(self.case)],
+                                           self.args.run_timeout, self.args.memory_mb, self.env)
+            # A solver or library rebuilt while the harness runs (a developer's tree) is not the
+            # input's doing (a half-written library crashes on loading): wait for the build to
+            # settle and run again.
+            if status in (0, 1) or not build_changing(self.bindir, built):
                 break
-            time.sleep(5)
-        problem = self.judge(target, status, out, timed_out)
-        return problem, status, out
+        problem = self.judge(target, status, out, how)
+        return problem, ("stopped" if how == "stopped" and problem is None else status), out
 
     def extended(self, rel):
         """Whether case/rel holds pristine/rel's content with results added after it."""
@@ -391,21 +428,33 @@ class Case:
             return set(PVD_ENTRY.findall(before)) <= set(PVD_ENTRY.findall(after))
         return rel.endswith(".csv") and after.startswith(before)
 
-    def judge(self, target, status, out, timed_out):
-        if timed_out:
-            return f"hang: still running after {self.args.run_timeout} s (killed)"
-        if status < 0:
+    def judge(self, target, status, out, how):
+        if how == "hung":
+            return (f"hang: still running after {self.args.run_timeout} s, and SIGTERM did not stop it "
+                    "(killed)")
+        in_loop = "Starting time loop" in out
+        if how == "stopped":
+            # A long run the input asked for (a huge endTime, a tiny step): it must have been in
+            # its time loop, stop cleanly on SIGTERM (status 143, or 0 before issue 14) and keep
+            # every earlier result; start-up taking that long on this case is a hang.
+            if not in_loop:
+                return (f"hang in start-up: no time loop after {self.args.run_timeout} s "
+                        f"(SIGTERM gave status {status})")
+            if status not in (0, 143):
+                return f"a run stopped by SIGTERM ended with status {status} (expected 143)"
+        elif status < 0:
             return f"killed by signal {-status} ({signal.Signals(-status).name})"
-        if status not in (0, 1):
+        elif status not in (0, 1):
             return f"exit status {status} (expected 0 or 1)"
         if "Error (internal)" in out:
             return "an internal error reached the user: " + line_with(out, "Error (internal)")
-        if status == 0:
+        if status == 0 or how == "stopped":
             for p in self.case.iterdir():
                 if p.name.lower().lstrip("+-") in ("nan", "inf", "infinity"):
-                    return f"exit 0 but wrote a time directory named '{p.name}'"
-            return None
-        if "Error" not in out:
+                    return f"exit {status} but wrote a time directory named '{p.name}'"
+            if how == "finished":
+                return None
+        elif "Error" not in out:
             return "exit status 1 without an error message"
         after = hash_tree(self.case)
         # A run that failed in its time loop (a blow-up the mutated input caused) may have added
@@ -413,12 +462,11 @@ class Case:
         # rows appended to the CSVs. Earlier results must still be there unchanged: earlier
         # entries of particles.pvd all listed, each CSV's earlier content its first bytes. A run
         # that failed before its time loop (bad input) must have changed nothing at all.
-        in_loop = "Starting time loop" in out
         changed = [rel for rel, h in self.hashes.items()
                    if rel != target and not rel.startswith(target + "/") and after.get(rel) != h
                    and not (in_loop and rel in after and self.extended(rel))]
         if changed:
-            return ("exit 1, but earlier results changed: "
+            return (f"{'stopped' if how == 'stopped' else 'exit 1'}, but earlier results changed: "
                     + ", ".join(f"{rel} ({'removed' if rel not in after else 'modified'})" for rel in changed[:8])
                     + (f" and {len(changed) - 8} more" if len(changed) > 8 else ""))
         return None
@@ -483,7 +531,7 @@ def processes(args):
     print(f"fuzz.processes: seed {seed} (set MFDYN_FUZZ_SEED to change it), budget {args.budget} s", flush=True)
     begin = time.monotonic()
     names = sorted(cases)
-    counts = {name: [0, 0] for name in names}  # exit 0, exit 1
+    counts = {name: [0, 0, 0] for name in names}  # exit 0, exit 1, long runs stopped by SIGTERM
     iteration = args.start
     while len(failures) < args.max_failures:
         if args.iterations is not None:
@@ -497,6 +545,8 @@ def processes(args):
         problem, status, output = case.run(target, kind, data)
         if status in (0, 1):
             counts[case.name][status] += 1
+        elif status == "stopped":
+            counts[case.name][2] += 1
         if problem:
             kept = keep_failure(out, case.name, target, kind, data, seed, iteration, problem)
             report(f"iteration {iteration}", case, target, kind, status, problem, output, kept)
@@ -506,7 +556,7 @@ def processes(args):
         iteration += 1
     elapsed = time.monotonic() - begin
     runs = iteration - args.start
-    summary = ", ".join(f"{n} {c[0]} ok/{c[1]} errors" for n, c in counts.items())
+    summary = ", ".join(f"{n} {c[0]} ok/{c[1]} errors/{c[2]} long runs stopped" for n, c in counts.items())
     print(f"fuzz.processes: {runs} runs in {elapsed:.1f} s ({runs / max(elapsed, 1e-9):.1f} per second), "
           f"seed {seed}, iterations {args.start}..{iteration - 1}; {summary}; {len(failures)} failures")
     for f in failures:
@@ -537,7 +587,7 @@ def main():
         else:
             p.add_argument("--bin", required=True, help="directory of particleGen and the solvers")
             p.add_argument("--iterations", type=int, default=None, help="this many runs instead of a budget")
-            p.add_argument("--run-timeout", type=int, default=10, help="seconds per solver run (a hang)")
+            p.add_argument("--run-timeout", type=int, default=5, help="seconds per solver run (a hang)")
             p.add_argument("--memory-mb", type=int, default=4096, help="address-space limit per run")
             p.add_argument("--verbose", action="store_true", help="print every run's outcome")
     args = parser.parse_args()
