@@ -115,7 +115,11 @@ Dictionary::Dictionary(const Dictionary& other)
     entries_.reserve(other.entries_.size());
     for (const auto& e : other.entries_) entries_.push_back(e->clone());
     rebuildIndex();
-    setScope(name_, nullptr);
+    // The clones carry the original's scope names already, and each cloned child dictionary has
+    // re-pointed its own children: only this level's are left. (setScope here walked the whole
+    // subtree at every level of a copy, so copying a value nested d deep cost d times its size.)
+    parent_ = nullptr;
+    repointChildren();
 }
 
 Dictionary& Dictionary::operator=(const Dictionary& other) {

@@ -702,7 +702,8 @@ public:
                         // `b $a;` with `a` a dictionary makes `b` a dictionary too.
                         if (e->tokens.size() == 1 && e->tokens.front().kind == Token::Kind::dictionary &&
                             s.tokens.size() == 1 && s.tokens.front().kind == AstToken::Kind::macro) {
-                            e->dict = std::make_unique<Dictionary>(*e->tokens.front().dict);
+                            // The token's copy is its own: moved, not copied again.
+                            e->dict = std::make_unique<Dictionary>(std::move(*e->tokens.front().dict));
                             e->dict->setWhere(where);
                             e->dict->closeBraceOffset = std::string::npos;  // no braces of its own to edit
                             e->tokens.clear();
