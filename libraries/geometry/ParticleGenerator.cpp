@@ -287,7 +287,12 @@ std::unique_ptr<ParticleSetBase> ParticleGenerator::build() {
         const double density = r.get<double>("density");
         if (!(density > 0) || !std::isfinite(density))
             throw r.error("density", "density must be positive and finite, found " + formatNumber(density));
-        const double volume = Lattice::New(r.subDict("lattice"), dim)->pointVolume();
+        const auto lattice = Lattice::New(r.subDict("lattice"), dim);
+        if (!(lattice->spacing() > 0))
+            throw r.subDict("lattice").error("points",
+                                             "`mass equalMass` scales the lattice's spacing: give "
+                                             "`spacing` instead of `points`");
+        const double volume = lattice->pointVolume();
         const double m = density * volume;
         if (!normalPositive(volume) || !normalPositive(m))
             throw r.error("lattice", "region '" + entry->key +
@@ -350,6 +355,10 @@ std::unique_ptr<ParticleSetBase> ParticleGenerator::build() {
             throw r.error("material",
                           "region '" + entry->key + "': either every region names its material or none does");
 
+        // `fields velocity;` (not a dictionary) was skipped without a word.
+        for (const char* key : {"fields", "angularVelocity"})
+            if (r.found(key) && !r.isDict(key))
+                throw r.error(key, std::string("expected a dictionary: ") + key + " { ... }");
         if (const Dictionary* spin = r.findDict("angularVelocity"))
             readAngularVelocity(*spin, dim, region.omega, region.omegaCentre);
 

@@ -109,7 +109,13 @@ StlSurface::StlSurface(const Dictionary& dict, int dimension)
         if (dictFile.has_parent_path()) path = dictFile.parent_path().parent_path() / path;
     }
     const std::string name = path.string();
-    const auto triangles = readStl(path);
+    // The file's own errors are reported at the `file` entry that named it.
+    std::vector<Triangle> triangles;
+    try {
+        triangles = readStl(path);
+    } catch (const InputError& e) {
+        throw dict.error("file", e.what());
+    }
     if (triangles.empty()) throw dict.error("file", name + " holds no triangles");
 
     // Merge bit-identical vertices and count how many triangles use each undirected edge.

@@ -261,3 +261,14 @@ TEST(ParticleGeneratorInput, PointCountMatchesThePointsOfEveryLattice) {
         EXPECT_EQ(l->pointCount(box), double(l->points(box).size() / std::size_t(c.dim))) << c.text;
     }
 }
+
+// Found by mutating the tutorials' dictionaries: `fields velocity;` (not a dictionary) was skipped
+// without a word, and `mass equalMass` with a nodal lattice of `points` was refused with no
+// file:line.
+TEST(ParticleGeneratorInput, MalformedEntriesAreRefusedWhereWritten) {
+    expectContains(refusal(oneRegion(2, plate2D, "type cubic; spacing 0.01;", "fields velocity;")),
+                   "in 'regions/a': keyword 'fields': expected a dictionary");
+    expectContains(refusal(oneRegion(3, "type box; min (0 0 0); max (1 1 1);", "type nodal; points (3 3 3);",
+                                     "mass equalMass;")),
+                   "system/particleGenDict:1:");
+}

@@ -149,3 +149,20 @@ TEST(StlSurface, NonFiniteVertexIsAnErrorNamingTheFile) {
         std::filesystem::remove(path);
     }
 }
+
+// A missing or unreadable file was reported without the dictionary entry that named it.
+TEST(StlSurface, MissingFileIsReportedAtTheEntry) {
+    try {
+        Shape::New(
+            Dictionary::parse("type stlSurface; file \"/nonexistent/mfdyn.stl\";", "system/particleGenDict"),
+            3);
+        FAIL() << "a missing file was accepted";
+    } catch (const InputError& e) {
+        const std::string message = e.what();
+        EXPECT_NE(
+            message.find(
+                "system/particleGenDict:1:18: keyword 'file': cannot open STL file /nonexistent/mfdyn.stl"),
+            std::string::npos)
+            << message;
+    }
+}
