@@ -37,14 +37,22 @@ Dictionary Case::readConstant(const std::string& name) const {
 
 std::vector<TimeDirectory> Case::timeDirectories() const {
     std::vector<TimeDirectory> times;
-    for (const auto& item : fs::directory_iterator(root_)) {
-        if (!item.is_directory()) continue;
+    // With error codes: a case directory that cannot be listed (permissions, removed meanwhile)
+    // threw filesystem_error, which reached the user as "Error (internal)".
+    std::error_code ec;
+    fs::directory_iterator it(root_, ec);
+    if (ec) throw InputError("cannot list the case directory '" + root_.string() + "': " + ec.message());
+    for (; it != fs::directory_iterator(); it.increment(ec)) {
+        const fs::directory_entry& item = *it;
+        std::error_code kind;
+        if (!item.is_directory(kind)) continue;
         const std::string name = item.path().filename().string();
         char* end = nullptr;
         const double value = std::strtod(name.c_str(), &end);
         if (name.empty() || *end != '\0' || !std::isfinite(value)) continue;  // also skips *.tmp-<pid>
         times.push_back({value, name});
     }
+    if (ec) throw InputError("cannot list the case directory '" + root_.string() + "': " + ec.message());
     std::sort(times.begin(), times.end(), [](const auto& a, const auto& b) { return a.value < b.value; });
     return times;
 }

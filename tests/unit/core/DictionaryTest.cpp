@@ -702,3 +702,18 @@ TEST(CaseDirectory, aFileIsNotADirectory) {
               "case directory '" + (dir.path / "missing").string() + "' does not exist");
     EXPECT_EQ(Case(dir.path).root(), dir.path);
 }
+
+// A case directory that cannot be listed threw std::filesystem::filesystem_error ("Error
+// (internal)"); here it is removed after the Case was made (permissions do not stop root).
+TEST(CaseDirectory, unlistableDirectoryIsAnInputError) {
+    auto dir = std::make_unique<TempDir>("mfdynCaseGone");
+    fs::create_directories(dir->path / "0.5");
+    fs::create_directories(dir->path / "1e-320");
+    const Case c(dir->path);
+    ASSERT_EQ(c.timeDirectories().size(), 2u);
+    EXPECT_EQ(c.latestTime()->name, "0.5");
+    const fs::path gone = dir->path;
+    dir.reset();
+    const std::string what = errorOf([&] { c.timeDirectories(); });
+    EXPECT_TRUE(has(what, "cannot list the case directory '" + gone.string() + "': ")) << what;
+}
