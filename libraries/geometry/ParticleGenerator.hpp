@@ -27,10 +27,14 @@
 //
 // Checks before anything is allocated: each region's lattice points over its shape's bounding
 // box are counted (Lattice::pointCount) and, at 200 bytes per particle, compared with the free
-// memory (MemAvailable in /proc/meminfo, or a cgroup's limit); a region that would not fit is an
-// error naming it, the estimated count and the spacing. A region left with no particle (none
-// inside its shape, or all taken over by later regions) is an error, and so is a particle
-// volume or mass that underflows to zero, overflows, or is subnormal.
+// memory (MemAvailable in /proc/meminfo, lowered by a cgroup limit or `ulimit -v`); a region
+// that would not fit is an error naming it, the estimated count and the spacing (particleGen
+// itself measured 128 bytes per particle in 3D with velocity and pressure; 200 leaves room for more
+// fields). A region left with no particle (none inside its shape, or all taken over by later
+// regions) is an error, and so is a particle volume or mass that underflows to zero, overflows,
+// or is subnormal. Shapes take coordinates and lengths within ±1e150 m, so that squared
+// distances stay finite. A lattice much coarser than its shape (particle volume off by more
+// than 25% from the shape's exact volume) is a warning.
 //
 // Two ways to fill regions of different density (sph-impact.md §4, "Initial lattices"):
 //  - `mass uniformSpacing` (default), scheme (b): every region uses its lattice as given and
