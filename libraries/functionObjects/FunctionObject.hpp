@@ -3,8 +3,8 @@
 // function object has its own writeControl:
 //
 //     writeControl  timeStep;   // timeStep (every writeInterval steps, default 1) | runTime |
-//                               // adjustableRunTime (each writeInterval of time) | writeTime (with the
-//                               solver's writes)
+//                               // adjustableRunTime (each writeInterval of time) |
+//                               // writeTime (with the solver's writes)
 //     writeInterval 10;
 //
 // and writes CSV under postProcessing/<name>/<startTime>/. Those that compare with a reference

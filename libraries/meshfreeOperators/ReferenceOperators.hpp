@@ -23,8 +23,8 @@
 //
 // Corrected kernel (eq. 18), sums over b INCLUDING a:
 //   W~_b(X_a) = alpha_a [1 + beta_a . r_ab] W_b(X_a),
-//   beta_a = -[sum V_b W_b r_ab (x) r_ab]^-1 sum V_b W_b r_ab,  alpha_a = 1 / sum V_b W_b [1 + beta_a .
-//   r_ab],
+//   beta_a = -[sum V_b W_b r_ab (x) r_ab]^-1 sum V_b W_b r_ab,
+//   alpha_a = 1 / sum V_b W_b [1 + beta_a . r_ab],
 // so that sum_b V_b W~_b(X_a) = 1 and sum_b V_b W~_b(X_a) X_b = X_a.
 //
 // Corrected Laplacian (App. A), L[f](X_a) ~ sum_b V_b (f_b - f_a) Lap~ W_b(X_a):

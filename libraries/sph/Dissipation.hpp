@@ -1,9 +1,10 @@
 #pragma once
 // Artificial dissipation of an SPH shock solver, chosen by name (the family `dissipation`):
 //
-//   dissipation { type riemann; velocity (1 2); density (0.5 2); energy (0.1 2); signal riemann; pairs
-//   approaching; } dissipation { type monaghanGingold; alpha 1; beta 2; balsara no; density (0.5 0); }  // +
-//   optional mass flux dissipation { type none; }
+//   dissipation { type riemann; velocity (1 2); density (0.5 2); energy (0.1 2); signal riemann;
+//                 pairs approaching; }
+//   dissipation { type monaghanGingold; alpha 1; beta 2; balsara no; density (0.5 0); }  // + mass flux
+//   dissipation { type none; }
 //
 // Each model's equations and keywords are in its own .cpp (RiemannDissipation,
 // MonaghanGingoldViscosity, NoDissipation) and in doc/models/dissipation/. The pair terms are

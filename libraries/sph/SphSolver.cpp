@@ -1,11 +1,12 @@
 // impactSph's discretisation (Zisis 2017; sph-impact.md §2–4), for a pair i, j with x_ij = x_i − x_j,
 // r̂ = x_ij/|x_ij|, v_ij = v_i − v_j and ∇_iW_ij(h) = r̂ dW/dr:
 //
-//   density sums (loop A)  S_i = Σ_j b_j W_ij(h_i),  ω_i = 1 + h_i/(d S_i) Σ_j b_j ∂W_ij/∂h(h_i),  ñ_i = Σ_j
-//   W_ij(h_i) continuity             dρ_i/dt = (c_i/ω_i) Σ_j b_j v_ij·∇_iW_ij(h_i)  (+ mass flux,
-//   Dissipation.hpp) momentum               m_i dv_i/dt = −Σ_j [a_i b_j P_i/ω_i ∇_iW_ij(h_i) + a_j b_i
-//   P_j/ω_j ∇_iW_ij(h_j)]  (+ viscosity) energy                 de_i/dt = (P_i/ρ_i²)(c_i/ω_i) Σ_j b_j
-//   v_ij·∇_iW_ij(h_i)  (+ heating, conduction)
+//   density sums (loop A)  S_i = Σ_j b_j W_ij(h_i),  ω_i = 1 + h_i/(d S_i) Σ_j b_j ∂W_ij/∂h(h_i),
+//                          ñ_i = Σ_j W_ij(h_i)
+//   continuity             dρ_i/dt = (c_i/ω_i) Σ_j b_j v_ij·∇_iW_ij(h_i)  (+ mass flux, Dissipation.hpp)
+//   momentum               m_i dv_i/dt = −Σ_j [a_i b_j P_i/ω_i ∇_iW_ij(h_i) + a_j b_i P_j/ω_j ∇_iW_ij(h_j)]
+//                          (+ viscosity)
+//   energy                 de_i/dt = (P_i/ρ_i²)(c_i/ω_i) Σ_j b_j v_ij·∇_iW_ij(h_i)  (+ heating, conduction)
 //
 // Strength (Zisis 2017 eqs. 6.5–6.9, volume form without ω; sign of 6.9 corrected, note §12):
 //   velocity gradient      L_i = −Σ_j (m_j/ρ_j) v_ij ⊗ ∇_iW_ij(h_i),   (L_ab = ∂v_a/∂x_b)
