@@ -416,7 +416,11 @@ class Case:
             # A solver or library rebuilt while the harness runs (a developer's tree) is not the
             # input's doing (a half-written library crashes on loading): wait for the build to
             # settle and run again.
-            if status in (0, 1) or not build_changing(self.bindir, built):
+            if status in (0, 1):
+                break
+            if "error while loading shared libraries" in out:  # written before this run began
+                build_changing(self.bindir, [])
+            elif not build_changing(self.bindir, built):
                 break
         problem = self.judge(target, status, out, how)
         return problem, ("stopped" if how == "stopped" and problem is None else status), out
