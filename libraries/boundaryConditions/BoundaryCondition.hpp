@@ -25,7 +25,7 @@
 //                                            search as neighbours; other fields by block.source.
 //  2a. addBoundaryForce(particles, f, t)    before constrainAcceleration: adds the boundary
 //                                            forces [N] per particle (prescribedTraction:
-//                                            A_a t_a of tl-jst-sph.md 2.7) to `f`; a
+//                                            A_a t_a of doc/methods/tl-jst-sph.md 2.7) to `f`; a
 //                                            total-Lagrangian solver adds f/V to dp/dt, an
 //                                            updated-Lagrangian one f/m to dv/dt.
 //   2. constrainAcceleration(particles, a, t)  after the rates are computed, before they are

@@ -1,7 +1,7 @@
 // fixed: v = 0 and dv/dt = 0 on the selection.
-//   Zisis 2017 section 5.4 (sph-impact.md section 4): wall particles whose velocity is reset to 0
+//   Zisis 2017 section 5.4 (doc/methods/sph-impact.md section 4): wall particles whose velocity is reset to 0
 //   every step; they keep density, pressure and stress and so act on their neighbours.
-//   Lee, Gil, Greto, Karim & Bonet 2016 section 2.7 (tl-jst-sph.md 2.7, "clamped"): p = dp/dt = 0,
+//   Lee, Gil, Greto, Karim & Bonet 2016 §2.7 (doc/methods/tl-jst-sph.md 2.7, "clamped"): p = dp/dt = 0,
 //   which this is when the solver passes its momentum array.
 // Both the rate and the velocity are zeroed (see BoundaryCondition.hpp) so that no integrator
 // stage moves the particles.

@@ -1,5 +1,5 @@
-// free: a traction-free surface, t = 0 (sph-impact.md section 4: "free surfaces: nothing
-// special"; tl-jst-sph.md 2.7: "traction-free boundaries need no work"). Every hook is a no-op.
+// free: a traction-free surface, t = 0 (doc/methods/sph-impact.md section 4: "free surfaces: nothing
+// special"; doc/methods/tl-jst-sph.md 2.7: "traction-free boundaries need no work"). Every hook is a no-op.
 //
 // Usage: name { type free; [regions (...); | shape { ... }] }   (default: all particles)
 #include "boundaryConditions/Free.hpp"

@@ -9,7 +9,7 @@
 // map Q kept per ghost (R = I - 2 n n^T for the image across one plane of unit normal n; the
 // product R2 R1 for the image across plane 2 of an image across plane 1, as at a corner), a
 // vector maps to Q a and a tensor to Q T Q^T.
-// Ghosts are regenerated every step (sph-impact.md section 4), never integrated.
+// Ghosts are regenerated every step (doc/methods/sph-impact.md section 4), never integrated.
 #include "core/Tensor.hpp"
 
 #include <cstddef>

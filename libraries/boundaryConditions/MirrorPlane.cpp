@@ -1,13 +1,13 @@
 // mirrorPlane: ghost particles mirrored through a plane, regenerated every step from the particles
 // within a layer of thickness 3 h_max (Zisis 2017 section 5.5, the shock-bubble tube;
-// sph-impact.md section 4; Libersky, Petschek, Carney, Hipp & Allahdadi 1993 for mirror ghosts in
+// doc/methods/sph-impact.md section 4; Libersky, Petschek, Carney, Hipp & Allahdadi 1993 for mirror ghosts in
 // SPH). For a source particle at x with d = (x - point)·n, 0 < d < thickness:
 //     x_ghost = x - 2 d n                                   (exact mirror image)
 //     v_ghost = v - 2 (v·n) n        free slip (default): normal velocity reversed, tangential kept
 //     v_ghost = -v                   noSlip yes: the wall velocity (zero) at the plane
 // and every scalar of the ghost is its source's (GhostBlock::source), so the interaction across
 // the plane pushes approaching particles back and the kernel sums near the plane are complete.
-// 3 h_max covers the support of the Gaussian truncated at 3h (sph-impact.md section 1); give
+// 3 h_max covers the support of the Gaussian truncated at 3h (doc/methods/sph-impact.md section 1); give
 // `thicknessFactor 2` for a kernel with support 2h, or `thickness` in metres.
 // Images of images: the ghosts already made by the conditions written before this one (other
 // mirror planes) are mirrored too, where within the layer and made from a selected particle,

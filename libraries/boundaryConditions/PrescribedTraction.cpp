@@ -1,7 +1,7 @@
 // prescribedTraction: a traction t(t) [Pa] on the selected surface particles, which carry the
 // total force t A, A the loaded face's area, shared in proportion to their volumes:
 //     f_a = t A V_a / Σ_b V_b,   Σ_a f_a = t A.
-//   Lee, Gil, Greto, Karim & Bonet 2016 section 2.7 (tl-jst-sph.md 2.7, "natural BCs enter
+//   Lee, Gil, Greto, Karim & Bonet 2016 section 2.7 (doc/methods/tl-jst-sph.md 2.7, "natural BCs enter
 //   through E_a = (A_a/V_a) t_a"): A_a, the area particle a stands for, is not given there; on
 //   a nodal lattice with tributary volumes (NodalLattice.cpp) the face particles' volumes are
 //   Δx/2 times their tributary face areas, so A V_a/Σ V_b = A_a exactly, and f_a = A_a t a

@@ -1,6 +1,6 @@
 // prescribedVelocity: v = v_p(t) and dv/dt = dv_p/dt on the selection while t < releaseTime;
 // afterwards the particles move freely from the velocity they had.
-//   Lee et al. 2016 section 2.7 and Fig. 15 (tl-jst-sph.md 2.7 and 8.7, the punch): p = rho0 v_pres,
+//   Lee et al. 2016 §2.7 and Fig. 15 (doc/methods/tl-jst-sph.md 2.7 and 8.7, the punch): p = rho0 v_pres,
 //   dp/dt = 0, v = (0, -100, 0) m/s on the mid quarter of the top face, released at t = 0.007 s.
 //   A total-Lagrangian solver working in momentum multiplies velocity(t) by rho0 itself.
 // The rate is set to dv_p/dt (zero for a constant velocity, the paper's dp/dt = 0) rather than

@@ -1,7 +1,7 @@
 // skewSymmetricPlane: the tangential components of the velocity and of its rate are zero on the
 // particles lying on a plane, the normal component is free:
 //     v <- (v·n) n,   a <- (a·n) n.
-//   Lee, Gil, Greto, Karim & Bonet 2016 section 2.7 (tl-jst-sph.md 2.7, "skew-symmetric:
+//   Lee, Gil, Greto, Karim & Bonet 2016 section 2.7 (doc/methods/tl-jst-sph.md 2.7, "skew-symmetric:
 //   tangential components = 0"), applied to p and dp/dt by the direct method; section 8.2, the
 //   swinging cube, has it on the faces X = 1, Y = 1, Z = 1 (rollers, symmetryPlane, on the others).
 //

@@ -2,7 +2,7 @@
 // (signed distance d <= tolerance), tangential components untouched:
 //     v <- v - (v·n) n,   a <- a - (a·n) n;
 // after the drift a particle found behind the plane (d < 0, round-off) is put back on it.
-//   Lee et al. 2016 section 2.7 (tl-jst-sph.md 2.7): "roller or symmetry plane: normal
+//   Lee et al. 2016 section 2.7 (doc/methods/tl-jst-sph.md 2.7): "roller or symmetry plane: normal
 //   component = 0", applied to p and dp/dt on the boundary particles (the direct method).
 // For an SPH fluid this alone leaves the kernel truncated at the plane; mirrorPlane adds the
 // ghost layer that completes it.

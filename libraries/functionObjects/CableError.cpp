@@ -1,4 +1,4 @@
-// cableError: the cable of Lee, Gil, Greto, Karim & Bonet 2016 section 8.1 (tl-jst-sph.md 8.1),
+// cableError: the cable of Lee, Gil, Greto, Karim & Bonet 2016 section 8.1 (doc/methods/tl-jst-sph.md 8.1),
 // a bar along x fixed at X = 0 and free at X = L, v0 on X <= a at t = 0, against the d'Alembert
 // solution of verification/CableWave with c = sqrt(E/rho0) (nu = 0: the 1D bar speed is the
 // dilatational one). One particle, the nearest to `tip` in the reference configuration, chosen

@@ -1,5 +1,5 @@
 // ellipticalDropError: the elliptical drop (Monaghan 1994, J. Comput. Phys. 110:399, §5; Zisis
-// 2017 PhD thesis §4.5.1, Fig. 4.2; sph-impact.md §8.1) against its exact solution. A disc of
+// 2017 PhD thesis §4.5.1, Fig. 4.2; doc/methods/sph-impact.md §8.1) against its exact solution. A disc of
 // radius R of incompressible, inviscid fluid with free surface and initial velocity
 // v0 = (−A0 x, A0 y) stays an ellipse with semi-axes a(t) along x and b(t) along y, ab = R²:
 //

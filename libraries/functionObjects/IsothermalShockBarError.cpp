@@ -1,5 +1,5 @@
 // isothermalShockBarError: a 1D run of the isothermal shock-bar (Zisis 2017 §5.1, Fig. 5.1;
-// sph-impact.md 8.2) against its exact solution (libraries/verification/IsothermalShockBar: two
+// doc/methods/sph-impact.md 8.2) against its exact solution (libraries/verification/IsothermalShockBar: two
 // successive Riemann problems, exact until t = 0.5393). Writes, at each of its write times t:
 //
 //   errorNorms.csv  L1, L2, Linf of density, velocity, pressure over [from, to], weights m/ρ

@@ -1,5 +1,5 @@
 // swingingCubeError: errors of a total-Lagrangian run of the swinging cube (Lee, Gil, Greto, Karim
-// & Bonet 2016 section 8.2, eq. 52; tl-jst-sph.md 8.2) against verification/SwingingCube, the
+// & Bonet 2016 section 8.2, eq. 52; doc/methods/tl-jst-sph.md 8.2) against verification/SwingingCube, the
 // small-strain linear elastic solution on [0, 1]^Dim, u = U0 cos(omega t) phi(X) with
 // omega = sqrt(Dim)/2 c_d pi. At each of its write times t it writes to errorNorms.csv
 // (time,field,L1,L2,Linf) the absolute norms of

@@ -1,5 +1,5 @@
 // box: the closed axis-aligned box min <= x <= max. Volume Π (max_d - min_d).
-// Closed, so that a lattice with nodes on the faces (nodal, tl-jst-sph.md 2.1) keeps them and
+// Closed, so that a lattice with nodes on the faces (nodal, doc/methods/tl-jst-sph.md 2.1) keeps them and
 // a selection box drawn up to a face takes the particles on it. Two regions whose boxes share a
 // face both contain a point on it: with `override yes` (the default) the later region takes it;
 // the cell-centred lattices (cubic) put no point on a face whose box is a whole number of cells.

@@ -2,7 +2,7 @@
 // Δx = spacing. Rows are Δy = Δx·√3/2 apart, y_j = min + (j + ½)Δy, and every odd row is shifted by
 // Δx/2: x_ij = min + (i + ½ + ½·(j mod 2))Δx. Each point stands for the area of its Voronoi cell,
 // the regular hexagon of area Δx·Δy = Δx²·√3/2. Every particle then has six neighbours at equal
-// distance, which makes SPH sums more isotropic than on a square lattice (sph-impact.md §4: a
+// distance, which makes SPH sums more isotropic than on a square lattice (doc/methods/sph-impact.md §4: a
 // hexagonal lattice is an alternative to the Cartesian one in the uniform-spacing scheme).
 // 2D only.
 #include "geometry/HexagonalLattice.hpp"

@@ -1,5 +1,5 @@
 // nodal: the Cartesian lattice that includes the boundary faces, used by total-Lagrangian SPH
-// (Lee, Gil, Greto, Karim & Bonet 2016, tl-jst-sph.md 2.1 "Layout"): along each direction d of
+// (Lee, Gil, Greto, Karim & Bonet 2016, doc/methods/tl-jst-sph.md 2.1 "Layout"): along each direction d of
 // the bounding box [min, max] there are n_d nodes
 //     x_i = min_d + i Δx_d,  i = 0 … n_d − 1,  Δx_d = L_d / (n_d − 1),  L_d = max_d − min_d,
 // the last one placed at max_d exactly (no round-off outside the box). The paper's examples:
@@ -8,7 +8,7 @@
 //   - `points (n1 n2 n3);`  n_d given (at least 2 each), Δx_d = L_d/(n_d − 1).
 // The adjusted spacings are logged.
 //
-// Volumes (tl-jst-sph.md 2.1 "Particle volume", recommendation [R]; not stated in the paper):
+// Volumes (doc/methods/tl-jst-sph.md 2.1 "Particle volume", recommendation [R]; not stated in the paper):
 // the tributary (dual-cell) volume V = Π_d Δx_d, halved once for each face of the box the node
 // lies on (an edge node in 3D gets Δx³/4, a corner node Δx³/8), so that Σ V = |box| exactly up
 // to round-off.

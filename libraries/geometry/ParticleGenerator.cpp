@@ -270,7 +270,7 @@ std::unique_ptr<ParticleSetBase> ParticleGenerator::build() {
 
     // Equal-mass regions share the particle mass of the lightest one (lowest density × its own
     // lattice's volume per point); the others are set to it by coarsening or refining their
-    // spacing (sph-impact.md §4, scheme (a)).
+    // spacing (doc/methods/sph-impact.md §4, scheme (a)).
     double equalMass = 0, lowestDensity = 0;
     std::vector<bool> isEqualMass;
     for (const auto& entry : regions.entries()) {

@@ -36,7 +36,7 @@
 // distances stay finite. A lattice much coarser than its shape (particle volume off by more
 // than 25% from the shape's exact volume) is a warning.
 //
-// Two ways to fill regions of different density (sph-impact.md §4, "Initial lattices"):
+// Two ways to fill regions of different density (doc/methods/sph-impact.md §4, "Initial lattices"):
 //  - `mass uniformSpacing` (default), scheme (b): every region uses its lattice as given and
 //    m_i = ρ₀ × (volume per lattice point). Works for any geometry; with equal spacings a density
 //    jump becomes a mass jump, which gives a small pressure hump at the contact.

@@ -1,5 +1,5 @@
 // M4 cubic B-spline (Schoenberg 1946; Monaghan & Lattanzio 1985; Monaghan 1992, Annu. Rev. Astron.
-// Astrophys. 30:543, Eq. 2.6), in the unit-support form of Zisis 2017 Eq. 2.7 (sph-impact.md 1.1):
+// Astrophys. 30:543 Eq. 2.6), in the unit-support form of Zisis 2017 Eq. 2.7 (doc/methods/sph-impact.md 1.1):
 //
 //     w(u) = (1 - u)_+^3 - 4 (1/2 - u)_+^3,   u = r/H,  H = 2h (Monaghan's h),
 //     c_d  = 8/3, 80/(7 pi), 16/pi            (d = 1, 2, 3).

@@ -1,5 +1,5 @@
 // Truncated Gaussian (Gingold & Monaghan 1977, MNRAS 181:375; Monaghan 1992, Annu. Rev. Astron.
-// Astrophys. 30:543; Zisis 2017 Eq. 2.6 and section 6.1, sph-impact.md 1.1 and 1.3):
+// Astrophys. 30:543; Zisis 2017 Eq. 2.6 and section 6.1, doc/methods/sph-impact.md 1.1 and 1.3):
 //
 //     W(r, h) proportional to exp(-(r/h)^2) for r < a h, zero beyond; a = `cutoff` (default 3).
 //

@@ -1,7 +1,7 @@
 #pragma once
 // Smoothing kernels: the family `kernel`.
 //
-// Form (sph-impact.md section 1.1, Zisis 2017 Eqs. 2.3-2.10): every kernel is a unit-support shape
+// Form (doc/methods/sph-impact.md §1.1, Zisis 2017 Eqs. 2.3-2.10): every kernel is a unit-support shape
 // w(u), u = r/H, zero for u >= 1, scaled to the support radius H = kappa h:
 //
 //     W(r, h) = c_d H^-d w(r/H),    c_d^-1 = integral of w over the unit ball in d dimensions,

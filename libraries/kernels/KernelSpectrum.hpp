@@ -3,7 +3,7 @@
 //
 // A kernel whose transform is negative somewhere lets the SPH density estimate, and the particle
 // distribution it drives, develop the pairing instability (Dehnen & Aly 2012, MNRAS 425:1068,
-// section 3; property 6 of sph-impact.md 1.1). For a radial W the d-dimensional transform is
+// section 3; property 6 of doc/methods/sph-impact.md 1.1). For a radial W the d-dimensional transform is
 //
 //     d = 1:  W^(k) = 2 int_0^H W(r) cos(kr) dr             FFTW_REDFT00 (DCT-I) on samples
 //     d = 2:  W^(k) = 2 pi int_0^H W(r) J0(kr) r dr         Gauss-Legendre, std::cyl_bessel_j

@@ -1,5 +1,5 @@
 // Standard mollifier (Friedrichs 1944, Trans. Amer. Math. Soc. 55:132; Zisis 2017 Eq. 2.4,
-// sph-impact.md 1.1):
+// doc/methods/sph-impact.md 1.1):
 //
 //     w(u) = exp(1/(u^2 - 1)) for u < 1, 0 beyond;   w'(u) = -2u/(u^2 - 1)^2 w(u),   u = r/H, H = h.
 //
@@ -9,7 +9,7 @@
 // Not positive definite: its flat top and steep flanks make it box-like, and its transform has a
 // deep negative lobe, min W^ = -0.0975 at kh = 6.68 (1D), -0.063 (2D), -0.043 (3D) (kernelSpectrum;
 // the 1D value checked against a brute-force quadrature in tests/unit/kernels). So it does not have
-// property 6 of sph-impact.md 1.1, which the thesis asks of a kernel.
+// property 6 of doc/methods/sph-impact.md 1.1, which the thesis asks of a kernel.
 #include "kernels/Mollifier.hpp"
 
 #include <cmath>

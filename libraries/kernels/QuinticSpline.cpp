@@ -1,6 +1,6 @@
 // M6 quintic B-spline (Schoenberg 1946; Morris, Fox & Zhu 1997, J. Comput. Phys. 136:214;
 // Monaghan 2005, Rep. Prog. Phys. 68:1703), in the unit-support form of Zisis 2017 Eq. 2.8
-// (sph-impact.md 1.1):
+// (doc/methods/sph-impact.md 1.1):
 //
 //     w(u) = (1 - u)_+^5 - 6 (2/3 - u)_+^5 + 15 (1/3 - u)_+^5,   u = r/H,  H = 3h,
 //     c_d  = 3^5/40, 7 3^7/(478 pi), 3^7/(40 pi)                  (d = 1, 2, 3).

@@ -1,6 +1,6 @@
 // Wendland C4 (Wendland 1995, Adv. Comput. Math. 4:389, Table 1: psi_{2,2} and psi_{4,2}; Dehnen &
 // Aly 2012, MNRAS 425:1068, Table 1). Zisis 2017 prints it as Eq. 2.10 and calls it "C6"; the note
-// (sph-impact.md 1.1) identifies it as C4:
+// (doc/methods/sph-impact.md 1.1) identifies it as C4:
 //
 //     d = 1:     w(u) = (1 - u)^5 (1 + 5u + 8u^2),        w'(u) = -14 u (1 + 4u) (1 - u)^4,     c_1 = 3/2
 //     d = 2, 3:  w(u) = (1 - u)^6 (1 + 6u + 35/3 u^2),    w'(u) = -56/3 u (1 + 5u) (1 - u)^5,

@@ -1,5 +1,5 @@
 #pragma once
-// Total-Lagrangian SPH operators on the reference configuration X (tl-jst-sph.md 2.2; Bonet & Lok
+// Total-Lagrangian SPH operators on the reference configuration X (doc/methods/tl-jst-sph.md 2.2; Bonet & Lok
 // 1999; Lee et al. 2016 App. A), computed once at construction and never updated: the corrected
 // kernel gradient, the corrected kernel, and the corrected Laplacian, each stored per pair in the
 // order of the neighbour list's compressed rows, so that a gather loop over row a reads them

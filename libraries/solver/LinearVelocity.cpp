@@ -1,5 +1,5 @@
 // linearVelocity: v(X) = v0 + G (X - X0), u = 0.
-//   Lee, Gil, Greto, Karim & Bonet 2016 section 8.8 (tl-jst-sph.md 8.8): the bending column,
+//   Lee, Gil, Greto, Karim & Bonet 2016 section 8.8 (doc/methods/tl-jst-sph.md 8.8): the bending column,
 //   v = V [Y/L, 0, 0] (V = 10 m/s, L = 6 m): gradient ((0 1.6667 0) (0 0 0) (0 0 0));
 //   section 8.4, the tensile cube, v = (0, V Y, 0): gradient ((0 0 0) (0 V 0) (0 0 0)).
 //

@@ -1,5 +1,5 @@
 // rigidRotation: v(X) = omega x (X - c), u = 0: a rigid spin about c.
-//   Lee, Gil, Greto, Karim & Bonet 2016 section 8.3 (tl-jst-sph.md 8.3), the spinning cube.
+//   Lee, Gil, Greto, Karim & Bonet 2016 section 8.3 (doc/methods/tl-jst-sph.md 8.3), the spinning cube.
 //
 //     keyword  meaning                                                       required  default
 //     omega    angular velocity [rad/s]: (wx wy wz) in 3D; in 2D a scalar     yes

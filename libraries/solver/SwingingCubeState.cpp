@@ -1,5 +1,5 @@
 // swingingCube: the initial state of the swinging cube, Lee, Gil, Greto, Karim & Bonet 2016
-// section 8.2, eq. (52) at t = 0 (tl-jst-sph.md 8.2):
+// section 8.2, eq. (52) at t = 0 (doc/methods/tl-jst-sph.md 8.2):
 //
 //     u(X) = U0 [sin(pi X/2) cos(pi Y/2) cos(pi Z/2), cos sin cos, cos cos sin],   v = 0,
 //     F = I + grad u (analytic),

@@ -1,7 +1,7 @@
 // twistingColumn: v(X) = omega(X) x (X - c), omega = Omega sin(pi s/(2L)) e_axis, s = (X - c).e_axis,
 // u = 0: a column twisted by an angular velocity that grows from 0 at its clamped base (s = 0) to
 // Omega at its free end (s = L).
-//   Lee, Gil, Greto, Karim & Bonet 2016 section 8.9, Figs 24-28 (tl-jst-sph.md 8.9): Omega = 105
+//   Lee, Gil, Greto, Karim & Bonet 2016 section 8.9, Figs 24-28 (doc/methods/tl-jst-sph.md 8.9): Omega = 105
 //   rad/s, L = 6 m, axis Y, about the origin (the Fig 26 caption's Z is a typo).
 //
 //     keyword  meaning                                           required  default

@@ -1,5 +1,5 @@
 #pragma once
-// The smoothed-density scheme of an SPH discretisation (Zisis 2017 §3–4; sph-impact.md §2), chosen
+// The smoothed-density scheme of SPH (Zisis 2017 §3–4; doc/methods/sph-impact.md §2), chosen
 // by name, with the momentum and energy equations matched to it variationally:
 //
 //     densityScheme { type number; form continuity; gradH yes; omegaMin 0.5; }

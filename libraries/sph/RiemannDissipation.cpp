@@ -1,5 +1,5 @@
 // Riemann-like artificial dissipation (Zisis 2017 §4.2, eqs. 4.21-4.28; Price 2008, J. Comput.
-// Phys. 227:10040; sph-impact.md section 3). For each pair with v_ij·r̂_ij ≤ 0 (or all pairs),
+// Phys. 227:10040; doc/methods/sph-impact.md section 3). For each pair with v_ij·r̂_ij ≤ 0 (or all pairs),
 // ρ̄ = ½(ρ_i+ρ_j), c̄ = ½(c_i+c_j), ∇̄W = ½(∇_iW_ij(h_i) + ∇_iW_ij(h_j)), F = r̂·∇̄W (< 0):
 //
 //   signal velocity      v'_ψ = c̄ − ½ b_ψ v_ij·r̂                          (4.22)
@@ -7,7 +7,7 @@
 //   viscosity            dv_i/dt += Σ m_j a_v v'_v (v_ij·r̂)/ρ̄ ∇̄W                      (4.27)
 //   mass flux            dρ_i/dt += Σ m_j a_ρ (P_i − P_j)/(ρ̄ v'_ρ) F                  (4.26)
 //   heating, conduction  de_i/dt += Σ (m_j/ρ̄)[−½ a_v v'_v (v_ij·r̂)² + a_e v'_e (e_i − e_j)] F   (4.28,
-//                        conduction sign corrected to be diffusive: sph-impact.md §12 item 6)
+//                        conduction sign corrected to be diffusive: doc/methods/sph-impact.md §12 item 6)
 //
 // Each (a, b) pair is given per variable: a the coefficient, b the factor of the relative
 // velocity in the signal velocity; a = 0 switches that term off. The terms are applied in

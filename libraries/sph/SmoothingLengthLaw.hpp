@@ -1,6 +1,6 @@
 #pragma once
 // How each particle's smoothing length follows the flow (the family `smoothingLength`; Zisis
-// 2017 §4.1; sph-impact.md §2):
+// 2017 §4.1; doc/methods/sph-impact.md §2):
 //
 //     smoothingLength { type massDensity; eta 1.2; }
 //

@@ -1,4 +1,4 @@
-// impactSph's discretisation (Zisis 2017; sph-impact.md §2–4), for a pair i, j with x_ij = x_i − x_j,
+// impactSph's discretisation (Zisis 2017; doc/methods/sph-impact.md §2–4), for a pair i, j, x_ij = x_i − x_j,
 // r̂ = x_ij/|x_ij|, v_ij = v_i − v_j and ∇_iW_ij(h) = r̂ dW/dr:
 //
 //   density sums (loop A)  S_i = Σ_j b_j W_ij(h_i),  ω_i = 1 + h_i/(d S_i) Σ_j b_j ∂W_ij/∂h(h_i),

@@ -1,6 +1,6 @@
 #pragma once
 // impactSph: updated-Lagrangian SPH for shocks and impact through inhomogeneous media (Zisis 2017;
-// the method as implemented is ../shared/methods/sph-impact.md). A step, in named phases:
+// the method as implemented is doc/methods/sph-impact.md). A step, in named phases:
 //
 //     updateNeighbours → computeEquationOfState → computeDensitySums (ω, ñ, ρ by summation)
 //     → computeRates (dρ/dt, dv/dt, de/dt with dissipation) → integrate (leapfrog) → updateSmoothingLength

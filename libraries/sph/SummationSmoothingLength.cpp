@@ -6,7 +6,7 @@
 // the density sum of the density scheme (c, b its measure) equal to the density the smoothing
 // length implies. Solved by SphSolver, which owns the neighbour sums, by Newton's method on h_i
 // with a bisection fallback when a step leaves the bracket, to |Δh|/h < tolerance within
-// maxIterations (the thesis gives no algorithm; sph-impact.md §2 [S]). The grad-h terms ω_i of
+// maxIterations (the thesis gives no algorithm; doc/methods/sph-impact.md §2 [S]). The grad-h terms ω_i of
 // the density scheme follow from the same sums. The initial h is η (m/ρ)^{1/d}.
 #include "sph/SummationSmoothingLength.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-// The conservation laws a total-Lagrangian solver evolves (Lee et al. 2016, tl-jst-sph.md 1 and
+// The conservation laws a total-Lagrangian solver evolves (Lee et al. 2016, doc/methods/tl-jst-sph.md 1 and
 // 2.3), chosen by name in constant/tlSphProperties:
 //
 //     formulation { type pFJ; }

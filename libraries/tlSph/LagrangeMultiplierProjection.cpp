@@ -1,4 +1,4 @@
-// Lee, Gil, Greto, Kulasegaram, Bonet 2016, App. B, eqs. (B.1)-(B.6) (tl-jst-sph.md 2.7,
+// Lee, Gil, Greto, Kulasegaram, Bonet 2016, App. B, eqs. (B.1)-(B.6) (doc/methods/tl-jst-sph.md 2.7,
 // "Essential, exact"), with the projectors C_B of the roller and skew-symmetric conditions.
 //
 // Derivation. Let d_a = pdot~_a - pdot_a over the real particles a, w_Ba = W~_a(X_B) (zero unless

@@ -1,5 +1,5 @@
 #pragma once
-// The exact essential boundary conditions of Lee et al. 2016 App. B (tl-jst-sph.md 2.7, optional
+// The exact essential boundary conditions of Lee et al. 2016 App. B (doc/methods/tl-jst-sph.md 2.7, optional
 // step (9) of Algorithm 1): SPH kernels do not interpolate, so setting dp/dt on the boundary
 // particles (the direct method) does not make the kernel interpolant of the rate take the
 // prescribed value there. This projection changes ALL rates in the V-weighted least-squares sense,
@@ -8,7 +8,7 @@
 //   C_B [ sum_a V_a pdot~_a W~_a(X_B) - pdot_B^pres ] = 0                                   (B.1)
 //   [and, projectConservingMomentum: sum_a V_a pdot~_a, sum_a V_a x~_a x pdot~_a unchanged]  (B.2)
 //
-// with W~ the corrected kernel (tl-jst-sph.md 2.2 (b)), the sum over B itself and its neighbours,
+// with W~ the corrected kernel (doc/methods/tl-jst-sph.md 2.2 (b)), the sum over B itself and its neighbours,
 // and C_B the orthogonal projector onto B's constrained directions:
 //   fixed (clamped), prescribedVelocity      I
 //   symmetryPlane (roller)                   n n^T
@@ -78,7 +78,7 @@ public:
     // Particles outside the support of every constrained particle are not touched.
     void project(std::vector<Vector<Dim>>& rate, const std::vector<Vector<Dim>>& prescribed) const;
     // The same with (B.2): the total force sum V rate and the total moment sum V x~ x rate are kept
-    // (x~: the positions of the stage, tl-jst-sph.md 2.5). Every particle changes.
+    // (x~: the positions of the stage, doc/methods/tl-jst-sph.md 2.5). Every particle changes.
     void projectConservingMomentum(std::vector<Vector<Dim>>& rate, const std::vector<Vector<Dim>>& prescribed,
                                    const std::vector<Vector<Dim>>& xTilde) const;
 

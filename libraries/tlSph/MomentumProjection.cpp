@@ -1,4 +1,4 @@
-// Lee, Gil, Greto, Kulasegaram, Bonet 2016, eqs. 45-51 (tl-jst-sph.md 2.5): see the header.
+// Lee, Gil, Greto, Kulasegaram, Bonet 2016, eqs. 45-51 (doc/methods/tl-jst-sph.md 2.5): see the header.
 #include "tlSph/MomentumProjection.hpp"
 
 #include "core/Parallel.hpp"

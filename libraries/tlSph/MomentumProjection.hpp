@@ -1,5 +1,5 @@
 #pragma once
-// The least-squares projections of Lee et al. 2016 section 5 (tl-jst-sph.md 2.5) that make the
+// The least-squares projections of Lee et al. 2016 section 5 (doc/methods/tl-jst-sph.md 2.5) that make the
 // internal forces and the dissipation of a total-Lagrangian solver conserve linear and angular
 // momentum exactly, whatever the kernel corrections and mixed strains do to their symmetry.
 //

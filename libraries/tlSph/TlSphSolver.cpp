@@ -1,4 +1,4 @@
-// tlSph (Lee, Gil, Greto, Kulasegaram, Bonet 2016, CMAME 311; tl-jst-sph.md 2.3-2.8). With
+// tlSph (Lee, Gil, Greto, Kulasegaram, Bonet 2016, CMAME 311; doc/methods/tl-jst-sph.md 2.3-2.8). With
 // g_ab = grad~W_b(X_a) the corrected kernel gradient in the reference configuration, V_a the
 // reference volume, p = rho0 v:
 //
@@ -262,7 +262,7 @@ void TlSphSolver<Dim>::initialiseFields(SolverRun& run) {
         Log::warning(
             "JST momentum eps4 " + std::to_string(dissipation_.momentum4) +
             " is at or below alphaCFL^3/8 = " + std::to_string(floor) +
-            ": the RK2 scheme is then anti-diffusive at the shortest wavelengths (tl-jst-sph.md App. C)");
+            ": the RK2 scheme is anti-diffusive at short wavelengths (doc/methods/tl-jst-sph.md App. C)");
 }
 
 template <int Dim>

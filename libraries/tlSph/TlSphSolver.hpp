@@ -1,7 +1,7 @@
 #pragma once
 // tlSph: total-Lagrangian mixed {p, F, H, J} SPH with JST stabilisation for large-strain solid
 // dynamics (Lee, Gil, Greto, Kulasegaram, Bonet 2016; the method as implemented is
-// ../shared/methods/tl-jst-sph.md). Every operator lives on the reference configuration X and
+// doc/methods/tl-jst-sph.md). Every operator lives on the reference configuration X and
 // its neighbours are found once (meshfreeOperators/ReferenceOperators.hpp). A step is the
 // two-stage TVD Runge-Kutta of Algorithm 1, each stage in named phases:
 //

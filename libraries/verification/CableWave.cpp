@@ -1,4 +1,4 @@
-// Cable (Lee, Gil, Greto, Karim & Bonet 2016, section 8.1, Figs 3-4; tl-jst-sph.md 8.1): the
+// Cable (Lee, Gil, Greto, Karim & Bonet 2016, section 8.1, Figs 3-4; doc/methods/tl-jst-sph.md 8.1): the
 // wave equation u_tt = c^2 u_XX on 0 <= X <= L, c = sqrt(E/rho0) (nu = 0), with u(0, t) = 0
 // (fixed), u_X(L, t) = 0 (free), u(X, 0) = 0 and u_t(X, 0) = v0 for X <= a, 0 beyond.
 // d'Alembert with the initial velocity w extended oddly about X = 0 (u = 0 there) and evenly

@@ -1,5 +1,5 @@
 #pragma once
-// The cable of Lee et al. 2016 section 8.1 (tl-jst-sph.md 8.1): a 1D elastic bar 0 <= X <= L,
+// The cable of Lee et al. 2016 section 8.1 (doc/methods/tl-jst-sph.md 8.1): a 1D elastic bar 0 <= X <= L,
 // fixed at X = 0, free at X = L, at rest and unstrained at t = 0 except for an axial velocity v0
 // on X <= a. The d'Alembert solution; equations in CableWave.cpp.
 namespace mfdyn {

@@ -1,5 +1,5 @@
 // Elliptical drop (Monaghan 1994, J. Comput. Phys. 110:399, Sec. 6; Monaghan & Rafiee 2013;
-// Zisis 2017 4.5.1, Fig. 4.2; sph-impact.md 8.1). An incompressible, inviscid drop with the
+// Zisis 2017 4.5.1, Fig. 4.2; doc/methods/sph-impact.md 8.1). An incompressible, inviscid drop with the
 // linear velocity field v = (a'/a x, b'/b y) keeps an elliptical boundary x^2/a^2 + y^2/b^2 = 1;
 // incompressibility gives a'/a + b'/b = 0, i.e. ab = 1 (area conserved), and the free surface
 // (P = 0) fixes the strain rate A = -a'/a = b'/b through

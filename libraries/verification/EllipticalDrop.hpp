@@ -1,5 +1,5 @@
 #pragma once
-// Reference solution of the elliptical drop (Monaghan 1994; Zisis 2017 4.5.1; sph-impact.md 8.1):
+// Reference solution of the elliptical drop (Monaghan 1994; Zisis 2017 4.5.1; doc/methods/sph-impact.md 8.1):
 // a unit disk of incompressible fluid with the initial velocity (-A0 x, A0 y) stretches into an
 // ellipse of semi-axes a(t) (along x) and b(t) (along y), ab = 1. Equations: EllipticalDrop.cpp.
 #include <array>

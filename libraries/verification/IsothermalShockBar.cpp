@@ -1,4 +1,4 @@
-// Isothermal shock-bar by successive Riemann problems (Zisis 2017 5.1, Fig. 5.1; sph-impact.md 8.2;
+// Isothermal shock-bar by successive Riemann problems (Zisis 2017 Fig. 5.1; doc/methods/sph-impact.md 8.2;
 // the wave-interaction construction of Toro 2009, Ch. 4.9, and Courant & Friedrichs 1948, Ch. III).
 //
 //   1. t = 0, x = a: Riemann problem bar1 | bar2 (RiemannSolver). Its right shock S1 reaches the

@@ -1,5 +1,5 @@
 #pragma once
-// Exact solution of the isothermal shock-bar (Zisis 2017 5.1, Fig. 5.1; sph-impact.md 8.2): four
+// Exact solution of the isothermal shock-bar (Zisis 2017 5.1, Fig. 5.1; doc/methods/sph-impact.md 8.2): four
 // uniform bars on the line, the first striking the second at t = 0. Built from two successive
 // Riemann problems; valid until the next wave interaction, which it reports. See the .cpp.
 #include <limits>
@@ -23,7 +23,7 @@ public:
     // between them is trivial (equal star densities), so the reflected wave passes it unchanged.
     IsothermalShockBar(double a, double b, double c, const Bar& bar1, const Bar& bar2, const Bar& bar3,
                        const Bar& bar4);
-    // The set-up of sph-impact.md 8.2: {rho, v, rho0, c0} = {1,1,1,1} on [0, 0.6), {1,0,1,1} on
+    // The set-up of doc/methods/sph-impact.md 8.2: {rho, v, rho0, c0} = {1,1,1,1} on [0, 0.6), {1,0,1,1} on
     // [0.6, 0.8), {0.25,0,0.25,0.5} on [0.8, 1.2), {1,0,1,1} on [1.2, 1.4] (the domain ends are
     // not modelled: no wave reaches them before validUntil()).
     static IsothermalShockBar zisis2017();

@@ -12,7 +12,7 @@
 //     fan (left):        v = 2/(g+1) [c_L + (g-1)/2 v_L + xi], c = 2/(g+1) [c_L + (g-1)/2 (v_L - xi)]
 //                        rho = rho_L (c/c_L)^(2/(g-1))                                      (4.56)
 //
-// Linear barotropic material P = c0^2 (rho - rho0) (Zisis 2017 Eq. 5.1; sph-impact.md 5.1), c = c0.
+// Linear barotropic P = c0^2 (rho - rho0) (Zisis 2017 Eq. 5.1; doc/methods/sph-impact.md 5.1), c = c0.
 // Rankine-Hugoniot for mass and momentum only (no energy equation), m^2 = (P - P_K)/(1/rho_K - 1/rho):
 //
 //     shock:       f_K = sqrt((P - P_K)(1/rho_K - 1/rho)) = c0 [sqrt(rho/rho_K) - sqrt(rho_K/rho)]

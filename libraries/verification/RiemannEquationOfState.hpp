@@ -17,7 +17,7 @@ struct PrimitiveState {
 };
 
 // A sampled state of the exact solution. internalEnergy is NaN for a barotropic material, which
-// has no energy equation (sph-impact.md 5.1).
+// has no energy equation (doc/methods/sph-impact.md 5.1).
 struct FlowState {
     double density = 0.0;
     double velocity = 0.0;
@@ -31,7 +31,7 @@ public:
 
     // P = (gamma - 1) rho e.
     static RiemannEquationOfState idealGas(double gamma);
-    // P = (gamma - 1) rho e - gamma pRef, c^2 = gamma (P + pRef)/rho (sph-impact.md 5.1, erratum 5).
+    // P = (gamma - 1) rho e - gamma pRef, c^2 = gamma (P + pRef)/rho (doc/methods/sph-impact.md erratum 5).
     static RiemannEquationOfState stiffenedGas(double gamma, double pRef);
     // P = c0^2 (rho - rho0), c = c0, no energy equation.
     static RiemannEquationOfState linearBarotropic(double rho0, double c0);

@@ -1,6 +1,6 @@
 // Swinging cube: Lee, Gil, Greto, Karim & Bonet 2016, "A new Jameson-Schmidt-Turkel Smooth
 // Particle Hydrodynamics algorithm for large strain explicit fast dynamics", Comput. Methods
-// Appl. Mech. Engrg. 311:71, section 8.2, eq. (52); tl-jst-sph.md 8.2.
+// Appl. Mech. Engrg. 311:71, section 8.2, eq. (52); doc/methods/tl-jst-sph.md 8.2.
 //
 //     u(X, t) = U0 cos(omega t) phi(X),
 //     phi     = [sin(pi X/2) cos(pi Y/2) cos(pi Z/2), cos sin cos, cos cos sin]   (3D)

@@ -1,5 +1,5 @@
 #pragma once
-// The swinging cube of Lee, Gil, Greto, Karim & Bonet 2016 (eq. 52; tl-jst-sph.md 8.2): a standing
+// The swinging cube of Lee et al. 2016 (eq. 52; doc/methods/tl-jst-sph.md 8.2): a standing
 // irrotational wave of small-strain linear elasticity in the unit cube [0, 1]^Dim, with rollers
 // (u_n = 0) on the planes X_k = 0 and skew-symmetric conditions (tangential u = 0) on X_k = 1.
 // Equations, the frequency in Dim dimensions and the checks are in SwingingCube.cpp.

@@ -1,6 +1,6 @@
 #pragma once
 // Constitutive laws for total-Lagrangian solids: the family `constitutiveLaw`, the first
-// Piola-Kirchhoff stress P of a deformation gradient F (tl-jst-sph.md section 1; Bonet, Gil &
+// Piola-Kirchhoff stress P of a deformation gradient F (doc/methods/tl-jst-sph.md section 1; Bonet, Gil &
 // Ortigosa 2015, CMAME 283:689; Lee, Gil, Greto, Kulasegaram & Bonet 2016, "A new Jameson-Schmidt-
 // Turkel smooth particle hydrodynamics algorithm for large strain explicit fast dynamics", CMAME
 // 311:71).

@@ -1,4 +1,4 @@
-// Linear elasticity in the deformation gradient (tl-jst-sph.md section 1, "Linear elastic"; the
+// Linear elasticity in the deformation gradient (doc/methods/tl-jst-sph.md section 1, "Linear elastic"; the
 // text of Lee, Gil, Greto, Kulasegaram & Bonet 2016, CMAME 311:71, sections 8.1-8.2, uses it
 // without writing it out):
 //

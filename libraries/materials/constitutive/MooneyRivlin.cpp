@@ -2,7 +2,7 @@
 // "A computational framework for polyconvex large strain elasticity", CMAME 283:689, section 5;
 // Lee, Gil, Greto, Kulasegaram & Bonet 2016, "A new Jameson-Schmidt-Turkel smooth particle
 // hydrodynamics algorithm for large strain explicit fast dynamics", CMAME 311:71, Eqs. 8-12;
-// tl-jst-sph.md section 1):
+// doc/methods/tl-jst-sph.md section 1):
 //
 //     W(F, H, J) = zeta (J^-2/3 F:F - 3) + xi (J^-2 (H:H)^3/2 - 3^3/2) + kappa/2 (J - 1)^2,
 //     Sigma_F = 2 zeta J^-2/3 F,

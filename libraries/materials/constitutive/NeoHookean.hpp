@@ -1,6 +1,6 @@
 #pragma once
 // `neoHookean`: the nearly incompressible neo-Hookean law, mooneyRivlin with xi = 0 and
-// zeta = mu/2 (Lee et al. 2016, section 2; tl-jst-sph.md section 1, "Named special cases").
+// zeta = mu/2 (Lee et al. 2016, section 2; doc/methods/tl-jst-sph.md section 1, "Named special cases").
 //
 //     materials { rubber { rho0 1100; youngsModulus 17e6; poissonRatio 0.45;
 //                          constitutiveLaw { type neoHookean; } } }

@@ -1,4 +1,4 @@
-// Cubic polynomial equation of state (Zisis 2017 Eqs. 5.4-5.5, sph-impact.md 5.1; the shape of the
+// Cubic polynomial EOS (Zisis 2017 Eqs. 5.4-5.5, doc/methods/sph-impact.md 5.1; the shape of the
 // Autodyn/LS-DYNA polynomial EOS with the coefficients of a linear Us-up Hugoniot):
 //
 //     P  = K1 mu + K2 mu^2 + K3 mu^3 + B0 rho0 e,    mu = rho/rho0 - 1,

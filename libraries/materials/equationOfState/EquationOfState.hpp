@@ -2,7 +2,7 @@
 // Equations of state: the family `equationOfState`.
 //
 // An equation of state gives the pressure P(rho, e) of a material from its density rho [kg/m^3]
-// and specific internal energy e [J/kg], P positive in compression (sph-impact.md section 5.1,
+// and specific internal energy e [J/kg], P positive in compression (doc/methods/sph-impact.md section 5.1,
 // Zisis 2017 section 1.1.3, 5.1-5.3, 6.1), and the squared sound speed
 //
 //     c^2 = dP/drho|_s = dP/drho|_e + (P/rho^2) dP/de|_rho,

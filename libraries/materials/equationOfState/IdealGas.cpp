@@ -1,4 +1,4 @@
-// Ideal gas (Zisis 2017 Eq. 1.14, sph-impact.md 5.1):
+// Ideal gas (Zisis 2017 Eq. 1.14, doc/methods/sph-impact.md 5.1):
 //
 //     P = (gamma - 1) rho e,    c^2 = gamma (gamma - 1) e = gamma P / rho.
 //

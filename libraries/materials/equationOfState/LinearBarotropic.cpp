@@ -1,5 +1,5 @@
 // Linear barotropic ("isothermal") equation of state (Zisis 2017 Eqs. 1.13 and 5.1,
-// sph-impact.md 5.1; the weakly compressible form of Monaghan 1994, J. Comput. Phys. 110:399):
+// doc/methods/sph-impact.md 5.1; the weakly compressible form of Monaghan 1994, J. Comput. Phys. 110:399):
 //
 //     P = c0^2 (rho - rho0),    c^2 = c0^2.
 //

@@ -1,5 +1,5 @@
 // Mie-Grueneisen equation of state referenced to the Hugoniot of a linear shock-velocity law
-// (Zisis 2017 Eqs. 6.10-6.13 and 1.9-1.12, sph-impact.md 5.1; the form of Hiermaier 1997 and of
+// (Zisis 2017 Eqs. 6.10-6.13 and 1.9-1.12, doc/methods/sph-impact.md 5.1; the form of Hiermaier 1997 and of
 // the Autodyn "shock" EOS; Meyers 1994, "Dynamic Behavior of Materials", ch. 4-5):
 //
 //     P   = (1 - Gamma0 mu / 2) P_H(mu) + Gamma0 rho e,    mu = rho/rho0 - 1,

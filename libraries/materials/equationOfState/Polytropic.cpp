@@ -1,4 +1,4 @@
-// Polytrope (Zisis 2017, the proof of section 5, sph-impact.md 5.1, there written c rho^gamma;
+// Polytrope (Zisis 2017, the proof of section 5, doc/methods/sph-impact.md 5.1, there written c rho^gamma;
 // Chandrasekhar 1939, "An Introduction to the Study of Stellar Structure", ch. IV):
 //
 //     P = K rho^gamma,    c^2 = gamma K rho^(gamma - 1).

@@ -1,4 +1,4 @@
-// Stiffened gas (Zisis 2017 Eq. 5.3 with the sign of sph-impact.md 12.5: Eq. 1.15's "+" is wrong;
+// Stiffened gas (Zisis 2017 Eq. 5.3 with the sign of doc/methods/sph-impact.md 12.5: Eq. 1.15's "+" is wrong;
 // Harlow & Amsden 1971, LA-4700; Menikoff & Plohr 1989, Rev. Mod. Phys. 61:75):
 //
 //     P = (gamma - 1) rho e - gamma pRef,    c^2 = gamma (P + pRef) / rho.

@@ -1,5 +1,5 @@
 // Tait equation (Cole 1948, "Underwater Explosions"; in SPH Monaghan 1994, J. Comput. Phys.
-// 110:399, Eq. 3.1; Batchelor 1967; Zisis 2017 elliptical drop, sph-impact.md 5.1 and 8.1):
+// 110:399, Eq. 3.1; Batchelor 1967; Zisis 2017 elliptical drop, doc/methods/sph-impact.md 5.1 and 8.1):
 //
 //     P = B ((rho/rho0)^gamma - 1),    c^2 = (gamma B / rho0) (rho/rho0)^(gamma - 1),
 //

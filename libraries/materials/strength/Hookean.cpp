@@ -1,5 +1,5 @@
 // Hypoelastic deviatoric stress (Libersky, Petschek, Carney, Hipp & Allahdadi 1993, J. Comput.
-// Phys. 109:67, Eqs. 5-7; Zisis 2017 Eq. 6.7, sph-impact.md section 5.2):
+// Phys. 109:67, Eqs. 5-7; Zisis 2017 Eq. 6.7, doc/methods/sph-impact.md section 5.2):
 //
 //     dtau/dt = W tau - tau W + 2mu (D - alpha tr(D) I),   D = sym L, W = skew L, L_ab = dv_a/dx_b,
 //

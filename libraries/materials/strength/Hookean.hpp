@@ -1,6 +1,6 @@
 #pragma once
 // `hookean`: hypoelastic deviatoric stress, Hooke's law in Jaumann-rate form, no yield
-// (sph-impact.md section 5.2; Libersky et al. 1993). The base of vonMises and johnsonCook, which
+// (doc/methods/sph-impact.md section 5.2; Libersky et al. 1993). The base of vonMises and johnsonCook, which
 // add a return to the yield surface.
 //
 //     strength { type hookean; shearModulus 27.1e9; }

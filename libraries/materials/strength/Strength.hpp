@@ -1,7 +1,7 @@
 #pragma once
 // Strength laws: the family `strength`, the deviatoric part of the stress of a solid.
 //
-// The total stress is sigma = -P I + tau (sph-impact.md section 5.2); the equation of state gives
+// The total stress is sigma = -P I + tau (doc/methods/sph-impact.md section 5.2); the equation of state gives
 // P, a strength law advances the deviatoric stress tau and its history (equivalent plastic strain,
 // temperature). Conventions, fixed for every model:
 //

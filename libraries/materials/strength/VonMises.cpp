@@ -1,6 +1,6 @@
 // Von Mises plasticity by radial return (Wilkins 1964, "Calculation of elastic-plastic flow",
 // Methods in Computational Physics 3:211; Krieg & Key 1976 for the hardening case; Zisis 2017
-// Eq. 6.14 corrected, sph-impact.md section 5.2 and erratum 9):
+// Eq. 6.14 corrected, doc/methods/sph-impact.md section 5.2 and erratum 9):
 //
 //     trial:   tau* = tau_n + dt dtau/dt (hookean),  sigma* = sqrt(3 J2(tau*)),  J2 = tau:tau/2
 //     yield:   sigma_Y = sigma_Y0 + H epsP

@@ -1,6 +1,6 @@
 #pragma once
 // `vonMises`: hookean plus a radial return to the von Mises yield surface sqrt(3 J2) = sigma_Y,
-// with optional linear isotropic hardening sigma_Y = sigma_Y0 + H epsP (sph-impact.md section 5.2,
+// with optional linear isotropic hardening sigma_Y = sigma_Y0 + H epsP (doc/methods/sph-impact.md §5.2,
 // erratum 9; Wilkins 1964). `libersky yes` scales by min(1, sigma_Y^2/(3 J2)) instead
 // (Libersky et al. 1993), which lands inside the surface.
 //

@@ -1,4 +1,4 @@
-# particleGen with the nodal lattice (tl-jst-sph.md 2.1): 31 x 11 x 6 nodes on 0.03 x 0.01 x 0.005 at
+# particleGen with the nodal lattice (doc/methods/tl-jst-sph.md 2.1): 31 x 11 x 6 nodes on 0.03 x 0.01 x 0.005 at
 # 1 mm, the adjusted spacing logged, and the tributary volumes filling the box exactly (the report
 # prints 6 significant digits: volume 1.5e-06 m^3 and mass 1100 x 1.5e-6 = 0.00165 kg).
 # $1 = build directory, $2 = this source directory.

@@ -1,4 +1,4 @@
-# Davison's asymmetric impact, the three rows of sph-impact.md 8.3 (Zisis 2017 §5.1), run by the
+# Davison's asymmetric impact, the three rows of doc/methods/sph-impact.md 8.3 (Zisis 2017 §5.1), run by the
 # tutorial's Allrun: the star pressure (median over the shocked plateaus, riemannError against the
 # exact two-shock solution of the linear barotropic Riemann problem) within 3% of the exact value
 # P* = 0.21142, 0.34056, 0.18623 in each row; the tutorial's runs are within 0.2%.

@@ -1,4 +1,4 @@
-# The isentropic shock-bar (sph-impact.md 8.5, Zisis 2017 §5.3: cubic equations of state, energy
+# The isentropic shock-bar (doc/methods/sph-impact.md 8.5, Zisis 2017 §5.3: cubic equations of state, energy
 # equation), run by the tutorial's Allrun. No exact solution, so a regression of what the method
 # promises: mass exact, momentum to round-off (< 1e-12), total energy drift below 1e-4 (the run:
 # 3.8e-7), and a flat pressure across the shocked hard|soft interface (the mass flux's purpose):

@@ -1,4 +1,4 @@
-# The isothermal shock-bar (sph-impact.md 8.2, Zisis 2017 Fig. 5.1), run by the tutorial's Allrun,
+# The isothermal shock-bar (doc/methods/sph-impact.md 8.2, Zisis 2017 Fig. 5.1), run by the tutorial's Allrun,
 # against its exact solution (isothermalShockBarError): every plateau's median rho, v and P within
 # 3% of the exact values at t = 0.3 and 0.4 (once the plateaus behind the reflected and transmitted
 # waves are wide enough to have a middle), and the shocks, where P crosses the mean of the states

@@ -1,4 +1,4 @@
-# The liquid-gas shock tube (sph-impact.md 8.4c, Zisis 2017 Fig. 5.9: stiffened-gas liquid, gamma
+# The liquid-gas shock tube (doc/methods/sph-impact.md 8.4c, Zisis 2017 Fig. 5.9: stiffened-gas liquid, gamma
 # 4.4, P_ref 0.6, against an ideal gas, gamma 1.4; density ratio 1/20, pressure ratio 1/100), run by
 # the tutorial's Allrun: star pressure and velocity (riemannError medians) within 5% of the exact
 # P* = 0.030814, u* = 0.47143 at t = 0.15. The tutorial's run: -1.6% and +0.07%. Conservation: mass

@@ -1,5 +1,5 @@
 # Sod's tube (gamma = 1.4, equal masses, 400 + 50 particles on [0, 1], Zisis 2017 Fig. 5.7) against
-# the exact solution at t = 0.2 (sph-impact.md 8.4a): L1(rho) on [0, 1] below 1.5e-2, and the star
+# the exact solution at t = 0.2 (doc/methods/sph-impact.md 8.4a): L1(rho) on [0, 1] below 1.5e-2, and the star
 # pressure and velocity (medians over the plateau, riemannError) within 2% of P* = 0.30313,
 # u* = 0.92745. The tutorial's run gives L1 4.1e-3 and errors of 0.3% and 0.04%.
 . "$(dirname "$0")/common.sh"

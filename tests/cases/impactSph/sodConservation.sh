@@ -1,5 +1,5 @@
 # Sod's tube: the SPH sums are pairwise antisymmetric and the dissipation total-energy consistent
-# (sph-impact.md 3, 4.28), so mass is exact (particle masses never change), momentum changes only
+# (doc/methods/sph-impact.md 3, 4.28), so mass is exact (particle masses never change), momentum changes only
 # by round-off (~900 pair sums of O(1) terms, eps 2.2e-16: ~1e-16..1e-15; bound 1e-12 x total mass
 # x a typical speed of 1), and the leapfrog's total-energy drift is second order in dt (the run
 # gives 1.9e-7 relative; bound 1e-4).

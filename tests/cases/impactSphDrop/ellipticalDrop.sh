@@ -1,6 +1,6 @@
 # The elliptical drop against its exact solution ($1 = build directory, $2 = source root): the
 # tutorial tutorials/impactSph/ellipticalDrop run to t = 0.0076, where the exact semi-axis is
-# b = 1.9445 (sph-impact.md §8.1, bisection/RK4 of Monaghan's ODE). Pass ([S] of the note): b within
+# b = 1.9445 (doc/methods/sph-impact.md §8.1, bisection/RK4 of Monaghan's ODE). Pass ([S] of the note): b within
 # 2% (the thesis's SPH gives 1.93, -0.7%; Monaghan 1994 1.91, -1.8%) and ab = 1 within 1% (the drop
 # is incompressible; Tait with c0 = 1500 m/s keeps |Δρ/ρ0| ~ 1e-3, so a 1% area error is the scheme's).
 # Mass is conserved exactly and momentum to round-off (checked too).

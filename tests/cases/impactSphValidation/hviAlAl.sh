@@ -1,4 +1,4 @@
-# Hiermaier 1997's Al-Al test (Zisis 2017 §6.2, sph-impact.md §8.8): tutorials/impactSph/hviAlAl
+# Hiermaier 1997's Al-Al test (Zisis 2017 §6.2, doc/methods/sph-impact.md §8.8): tutorials/impactSph/hviAlAl
 # refined from the tutorial's 0.25 mm to the thesis's 0.05 mm hexagonal lattice (183491 particles)
 # against the experiment: debris L/W at 20 µs within ±10% of 1.39, hole diameter within the
 # experiment's 27.5-34.5 mm widened by 15% at each end. About 1.6 hours on two unloaded threads.

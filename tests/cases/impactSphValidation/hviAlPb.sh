@@ -1,4 +1,4 @@
-# Hiermaier 1997's Al-Pb test (Zisis 2017 §6.2, sph-impact.md §8.8): tutorials/impactSph/hviAlPb
+# Hiermaier 1997's Al-Pb test (Zisis 2017 §6.2, doc/methods/sph-impact.md §8.8): tutorials/impactSph/hviAlPb
 # (1.5 mm lead plate, see its README) refined from the tutorial's 0.25 mm to the thesis's 0.05 mm
 # hexagonal lattice (92291 particles) against the experiment: debris L/W at 20 µs within ±10% of
 # 1.56, hole diameter within ±15% of 26 mm. About 1.8 hours on one thread, one on two.

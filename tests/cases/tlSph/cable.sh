@@ -1,4 +1,4 @@
-# Cable (Lee et al. 2016 8.1; tl-jst-sph.md 3.x): a 10 m steel cable, 100 x 3 x 3 particles,
+# Cable (Lee et al. 2016 8.1; doc/methods/tl-jst-sph.md 8.1): a 10 m steel cable, 100 x 3 x 3 particles,
 # fixed at X = 0, 5 m/s on X <= 2.5 m; tip velocity and displacement against d'Alembert
 # (c = 5000 m/s). For eps2_p = 1/32 (the tutorial) and the paper's extremes 0 and 1/8:
 #   - the front reaches the tip (v >= 2.5 m/s) within 3 dx / c = 61 us of 1.5 ms;

@@ -1,4 +1,4 @@
-# Spinning cube (Lee et al. 2016 8.3; tl-jst-sph.md 3.x): one revolution of the free unit cube at
+# Spinning cube (Lee et al. 2016 8.3; doc/methods/tl-jst-sph.md 8.3): one revolution of the free unit cube at
 # 105 rad/s. With the projections the angular momentum drifts by less than 1e-10 relative and the
 # linear momentum stays at round-off; switched off, the drift is measurably larger (the negative
 # control: at least 100 times, and above 1e-9). {p,F} without boundaries also keeps F equal to the

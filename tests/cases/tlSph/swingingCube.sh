@@ -1,4 +1,4 @@
-# Swinging cube (Lee et al. 2016 8.2, eq. 52; tl-jst-sph.md 3.x): the linear-elastic unit cube
+# Swinging cube (Lee et al. 2016 8.2, eq. 52; doc/methods/tl-jst-sph.md 8.2): the linear-elastic unit cube
 # with rollers on X, Y, Z = 0 and skew-symmetric planes on X, Y, Z = 1, from the analytic
 # displacement, to t = 6 ms; L2 errors of p = rho0 v and P against the analytic solution on a
 # 40^3 background cloud, for n = 9, 17, 33 particles per side. Pass: the observed order of both,

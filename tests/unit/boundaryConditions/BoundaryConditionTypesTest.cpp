@@ -81,7 +81,7 @@ TEST(Fixed, ReleaseTimeEndsTheConstraint) {
 
 TEST(PrescribedVelocity, HoldsTheVelocityUntilReleaseThenLetsGo) {
     auto p = lattice<3>(5, 0.25);
-    // The punch of tl-jst-sph.md 8.7: the mid quarter of the top face at -100 m/s until 7 ms.
+    // The punch of doc/methods/tl-jst-sph.md 8.7: the mid quarter of the top face at -100 m/s until 7 ms.
     auto bc = condition<3>(
         "type prescribedVelocity; velocity (0 -100 0); releaseTime 0.007;"
         "shape { type box; min (0.2 0.9 0.2); max (0.8 1.1 0.8); }",

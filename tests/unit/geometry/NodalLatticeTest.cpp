@@ -1,4 +1,4 @@
-// The nodal lattice (tl-jst-sph.md 2.1): nodes on the faces, Δx = L/(n − 1), tributary volumes.
+// The nodal lattice (doc/methods/tl-jst-sph.md 2.1): nodes on the faces, Δx = L/(n − 1), tributary volumes.
 // Volumes are products and halvings of Δx (exact in binary) summed over up to 10^4 nodes, so Σ V
 // matches |box| to round-off of the sum: 1e-12 relative. Coordinates on faces are exact by
 // construction (the last node is placed at max itself), so they are compared with ==.

@@ -1,5 +1,5 @@
-// Kernels against published numbers: the normalisation constants (sph-impact.md 1.1, Dehnen & Aly
-// 2012 Table 1), the second moments s_d of sph-impact.md 1.2, resolution matching, the truncated
+// Kernels against published numbers: the normalisation constants (doc/methods/sph-impact.md 1.1, Dehnen & Aly
+// 2012 Table 1), the second moments s_d of doc/methods/sph-impact.md 1.2, resolution matching, the truncated
 // Gaussian in closed form, and the input errors.
 #include "KernelTestTools.hpp"
 
@@ -61,7 +61,7 @@ TEST(KernelNormalisation, mollifierConstantToTwelveDigits) {
     }
 }
 
-// sph-impact.md 1.2: s_d for h = H (so s_d(kernel)/kappa here) and H/h_DA = sqrt(d)/(2 s_d). The
+// doc/methods/sph-impact.md 1.2: s_d for h = H (so s_d(kernel)/kappa here) and H/h_DA = sqrt(d)/(2 s_d). The
 // note prints 4 and 3 decimals: its values are within half a unit of the last digit of the truth.
 struct NoteRow {
     std::string dictionary;
@@ -159,7 +159,7 @@ TEST(KernelResolution, matchedSmoothingLengthEqualsStandardDeviation) {
     const double H1 = m4->supportRadius(1.0);
     const double H2 = c2->supportRadius(matchedSmoothingLength(*m4, 1.0, *c2, 3));
     EXPECT_NEAR(H2 / H1, 0.4743 / 0.4472, 2.5e-4 * 0.4743 / 0.4472);
-    // The thesis default (sph-impact.md 1.2): a Gaussian e^-(r/h)^2 with h = 1.2 dx cut at 3h has
+    // The thesis default (doc/methods/sph-impact.md 1.2): a Gaussian e^-(r/h)^2 with h = 1.2 dx cut at 3h has
     // sigma_1D = 0.8485 dx; M4 at equal sigma in 1D has H/dx = 2.94 (last column of the table).
     const double hM4 = matchedSmoothingLength(*gauss, 1.2, *m4, 1);
     EXPECT_NEAR(gauss->secondMoment(1) * 1.2, 0.8485, 1e-3);  // truncation shifts the 4th digit

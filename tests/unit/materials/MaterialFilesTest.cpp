@@ -26,7 +26,7 @@ TEST(MaterialFiles, MieGruneisenFromAl2) {
 }
 
 TEST(MaterialFiles, EveryTable61MaterialBuildsAMieGruneisen) {
-    // Table 6.1 (sph-impact.md 5.3) in SI: rho0 [kg/m^3], c0 [m/s].
+    // Table 6.1 (doc/methods/sph-impact.md 5.3) in SI: rho0 [kg/m^3], c0 [m/s].
     const std::vector<std::tuple<std::string, double, double>> table = {
         {"Al1", 2710, 5300}, {"Al2", 2785, 5330},   {"Pb", 11360, 2030},
         {"Cu", 8930, 3900},  {"epoxy", 2280, 2930}, {"homogenized", 2659, 4730}};

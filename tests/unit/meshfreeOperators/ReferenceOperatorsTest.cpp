@@ -1,4 +1,4 @@
-// Patch tests of the reference-configuration operators (tl-jst-sph.md 2.2-2.3) on a jittered box
+// Patch tests of the reference-configuration operators (doc/methods/tl-jst-sph.md 2.2-2.3) on a jittered box
 // lattice that includes its faces, so that every correction is exercised where it matters: at the
 // boundary, where the uncorrected kernel gradient is wrong by O(1).
 //

@@ -1,4 +1,4 @@
-// The exact essential boundary conditions of Lee et al. 2016 App. B (tl-jst-sph.md 2.7) on nodal
+// The exact essential boundary conditions of Lee et al. 2016 App. B (doc/methods/tl-jst-sph.md 2.7) on nodal
 // box lattices (faces included, h = 1.3 dx, wendlandC2, tributary volumes): after the projection
 // the corrected-kernel interpolant of the rate meets the constraints C_B at every constrained
 // particle; the change is the V-weighted least-squares one (orthogonal to every feasible change);

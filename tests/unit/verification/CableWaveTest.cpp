@@ -1,4 +1,4 @@
-// The cable's d'Alembert solution (tl-jst-sph.md 8.1) against the figures of the note and its
+// The cable's d'Alembert solution (doc/methods/tl-jst-sph.md 8.1) against the figures of the note and its
 // own wave equation: L = 10 m, c = 5000 m/s, v0 = 5 m/s on X <= 2.5 m.
 #include "verification/CableWave.hpp"
 

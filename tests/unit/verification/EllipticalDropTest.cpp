@@ -1,4 +1,4 @@
-// The elliptical drop ODE of sph-impact.md 8.1 against the note's [C] values (5 digits printed).
+// The elliptical drop ODE of doc/methods/sph-impact.md 8.1 against the note's [C] values (5 digits printed).
 #include <gtest/gtest.h>
 
 #include "core/Error.hpp"

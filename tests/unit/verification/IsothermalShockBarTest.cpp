@@ -1,4 +1,4 @@
-// The isothermal shock-bar of sph-impact.md 8.2 against the note's [C] profile at t = 0.4
+// The isothermal shock-bar of doc/methods/sph-impact.md 8.2 against the note's [C] profile at t = 0.4
 // (5 significant digits printed: checked to half a unit in the last digit).
 #include <gtest/gtest.h>
 

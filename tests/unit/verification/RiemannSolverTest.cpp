@@ -1,4 +1,4 @@
-// Exact Riemann solutions against the [C] values of sph-impact.md 8.3-8.4 (Zisis 2017, computed
+// Exact Riemann solutions against the [C] values of doc/methods/sph-impact.md 8.3-8.4 (Zisis 2017, computed
 // for the note by bisection to 1e-12). The note prints 5 significant digits (4 decimals for wave
 // positions), so each value is checked to half a unit in its last printed digit.
 #include <gtest/gtest.h>
