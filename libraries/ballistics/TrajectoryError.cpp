@@ -65,7 +65,7 @@ void TrajectoryError::write() {
         }
     };
     std::vector<double> ex(n), ev(n);
-    const Norms sums = Reduce::sum<Norms>(n, [&](std::size_t i) {
+    const Norms sums = GlobalReduce::sum<Norms>(n, [&](std::size_t i) {
         double xe[3], ve[3];
         solver_.bodyForce().exactTrajectory(&x0_[i * dim], &v0_[i * dim], tau, xe, ve);
         double dx = 0, dv = 0;

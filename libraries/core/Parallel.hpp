@@ -1,7 +1,17 @@
 #pragma once
-// Loops and reductions. Every particle loop goes through parallelFor, every global reduction
-// through Reduce: OpenMP lives here and nowhere in solver code, and an MPI build replaces the
-// bodies of Reduce::sum/max/min with an MPI_Allreduce after the local part.
+// Loops and reductions. Every particle loop goes through parallelFor, every reduction through
+// LocalReduce or GlobalReduce: OpenMP lives here and nowhere in solver code.
+//
+// Two kinds of reduction, and the choice matters once particles are spread over MPI ranks:
+//   LocalReduce   over this process's items, threads only. For quantities of the rank's own
+//                 data (its bounding box, its largest displacement, a count of its own bad
+//                 inputs behind an early return or throw).
+//   GlobalReduce  LocalReduce followed by the global hook (globalSum/globalMin/globalMax below),
+//                 which an MPI build fills with MPI_Allreduce. For figures every rank must agree
+//                 on: time-step votes, conservation sums and error norms, state-check counts,
+//                 projections. A global reduction is collective: every rank must reach it, so
+//                 it must never sit behind a rank-local early return (that would deadlock).
+// `Reduce` is the old name of GlobalReduce, kept while call sites move to one of the two.
 //
 // Reductions are deterministic for any thread count: the range is cut into fixed blocks
 // (independent of the number of threads), each block is summed in order, and the block sums
@@ -10,6 +20,7 @@
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace mfdyn {
@@ -35,8 +46,9 @@ void parallelForWork(std::size_t n, std::size_t work, Body&& body) {
     for (std::size_t i = 0; i < n; ++i) body(i);
 }
 
-// A fixed-size array of sums for Reduce::sum (which value-initialises its type to zero; Eigen
-// vectors are not): Reduce::sum<SumArray<3>>(n, [&](std::size_t i) { SumArray<3> t; ...; return t; }).
+// A fixed-size array of sums for LocalReduce::sum and GlobalReduce::sum (which value-initialise
+// their type to zero; Eigen vectors are not):
+// GlobalReduce::sum<SumArray<3>>(n, [&](std::size_t i) { SumArray<3> t; ...; return t; }).
 template <int N>
 struct SumArray {
     std::array<double, N> s{};
@@ -46,7 +58,20 @@ struct SumArray {
     }
 };
 
-struct Reduce {
+// The global hooks: the one place an MPI build changes. On one process they return their
+// argument. `T` for globalSum is anything Reduce-summable (double, size_t, SumArray<N>).
+template <class T>
+T globalSum(const T& local) {
+    return local;
+}
+inline double globalMax(double local) {
+    return local;
+}
+inline double globalMin(double local) {
+    return local;
+}
+
+struct LocalReduce {
     static constexpr std::size_t blockSize = 4096;
 
     // Sum of term(i) for i in [0, n). `T` must support += and value-initialisation to zero.
@@ -63,36 +88,48 @@ struct Reduce {
         }
         T total{};
         for (const T& p : partial) total += p;
-        return global(total);
+        return total;
     }
 
+    // -inf over no items.
     template <class Term>
     static double max(std::size_t n, Term&& term) {
         double m = -std::numeric_limits<double>::infinity();
 #pragma omp parallel for reduction(max : m) schedule(static) if (n >= parallelThreshold)
         for (std::size_t i = 0; i < n; ++i) m = std::max(m, double(term(i)));
-        return globalMax(m);
+        return m;
     }
 
+    // +inf over no items.
     template <class Term>
     static double min(std::size_t n, Term&& term) {
         double m = std::numeric_limits<double>::infinity();
 #pragma omp parallel for reduction(min : m) schedule(static) if (n >= parallelThreshold)
         for (std::size_t i = 0; i < n; ++i) m = std::min(m, double(term(i)));
-        return globalMin(m);
-    }
-
-    // The hooks an MPI build fills in; on one process they return their argument.
-    template <class T>
-    static T global(const T& local) {
-        return local;
-    }
-    static double globalMax(double local) {
-        return local;
-    }
-    static double globalMin(double local) {
-        return local;
+        return m;
     }
 };
+
+// Over the items of every rank: the local reduction, then the global hook. A rank with no items
+// contributes zero, -inf or +inf, so it must still call (see above).
+struct GlobalReduce {
+    static constexpr std::size_t blockSize = LocalReduce::blockSize;
+
+    template <class T, class Term>
+    static T sum(std::size_t n, Term&& term) {
+        return globalSum(LocalReduce::sum<T>(n, std::forward<Term>(term)));
+    }
+    template <class Term>
+    static double max(std::size_t n, Term&& term) {
+        return globalMax(LocalReduce::max(n, std::forward<Term>(term)));
+    }
+    template <class Term>
+    static double min(std::size_t n, Term&& term) {
+        return globalMin(LocalReduce::min(n, std::forward<Term>(term)));
+    }
+};
+
+// The old name: every existing call site was a global one or is moved to LocalReduce.
+using Reduce = GlobalReduce;
 
 }  // namespace mfdyn

@@ -7,7 +7,8 @@
 //   U, Φ                               internal and potential energy, when the solver provides them
 //   E = K + U + Φ                      total energy
 //
-// Sums go through Reduce::sum (fixed blocks), so the figures do not depend on the thread count.
+// Sums go through GlobalReduce::sum (fixed blocks), so the figures do not depend on the thread
+// count, and an MPI build sums over every rank.
 #include "functionObjects/ConservedQuantities.hpp"
 
 #include "core/Parallel.hpp"
@@ -63,7 +64,7 @@ std::vector<double> ConservedQuantities::measure() const {
             return *this;
         }
     };
-    const Sums total = Reduce::sum<Sums>(n, [&](std::size_t i) {
+    const Sums total = GlobalReduce::sum<Sums>(n, [&](std::size_t i) {
         Sums s;
         const double m = mass(i);
         double x[3] = {0, 0, 0}, v[3] = {0, 0, 0};

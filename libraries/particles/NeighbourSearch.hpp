@@ -2,10 +2,10 @@
 // Cell-linked-list neighbour search over particles sorted by cell.
 //
 // bin() puts the particles on a grid of cells no narrower than maxRadius / cellsPerRadius and
-// sorts them by cell with a stable counting sort; order() is that permutation. A caller that
-// applies it to its own fields (applyOrder) gets particles that are close in space close in
-// memory, which is what makes the gather loops over the list cache-friendly; binning the
-// reordered particles again then gives the identity order. list() builds the compressed-row
+// sorts them by cell with a stable counting sort (a CellBins, bins()); order() is that
+// permutation. A caller that applies it to its own fields (applyOrder) gets particles that are
+// close in space close in memory, which is what makes the gather loops over the list
+// cache-friendly; binning the reordered particles again then gives the identity order. list() builds the compressed-row
 // neighbour list in the caller's indexing.
 //
 // Pairs: with r_i the support radius of particle i and d = |separation(x_i, x_j)|, j is in row i
@@ -23,9 +23,13 @@
 // The grid is limited to maxCellsPerParticle cells per particle: a few particles in a huge box
 // coarsen the cells instead of allocating an empty grid. Periodic directions need
 // maxRadius <= period / 2, so that only the minimum image can be a neighbour.
+//
+// Everything here is rank-local (LocalReduce): the search sees this process's particles (owned
+// and ghost) and never waits for another rank.
 #include "core/Error.hpp"
 #include "core/Parallel.hpp"
 #include "core/Tensor.hpp"
+#include "particles/CellBins.hpp"
 #include "particles/NeighbourDomain.hpp"
 #include "particles/NeighbourList.hpp"
 
@@ -82,7 +86,9 @@ public:
     }
 
     // order()[k] is the index of the particle at place k of the cell order.
-    const std::vector<Index>& order() const { return order_; }
+    const std::vector<Index>& order() const { return bins_.order(); }
+    // The cells of the last bin(), for point queries among the same particles.
+    const CellBins<Dim>& bins() const { return bins_; }
 
     // field[k] <- field[order()[k]], for a field of `width` contiguous values per particle.
     template <class T>
@@ -98,10 +104,10 @@ public:
         return domain_.separation(xi, xj);
     }
 
-    std::size_t size() const { return order_.size(); }
+    std::size_t size() const { return bins_.size(); }
     double maxRadius() const { return maxRadius_; }
-    const std::array<std::int64_t, Dim>& cellShape() const { return cells_; }
-    std::size_t cellCount() const { return cellStart_.empty() ? 0 : cellStart_.size() - 1; }
+    const std::array<std::int64_t, Dim>& cellShape() const { return bins_.shape(); }
+    std::size_t cellCount() const { return bins_.cellCount(); }
 
 private:
     void binSorted(const std::vector<Vector<Dim>>& positions, const double* radius, bool constantRadius);
@@ -116,13 +122,7 @@ private:
     bool constantRadius_ = false;
     double maxRadius_ = 0.0;
 
-    Vector<Dim> origin_ = Vector<Dim>::Zero();
-    std::array<double, Dim> width_{};
-    std::array<std::int64_t, Dim> cells_{};
-
-    std::vector<Index> order_;
-    std::vector<Index> cellStart_;
-    std::vector<Vector<Dim>> sortedPosition_;
+    CellBins<Dim> bins_;
     std::vector<double> sortedRadius2_;
 
     // Per block of rows: the rows' neighbours in place order, and each row's length. Kept between
@@ -134,13 +134,13 @@ private:
 template <int Dim>
 template <class T>
 void NeighbourSearch<Dim>::applyOrder(std::span<T> field, std::size_t width) const {
-    if (field.size() != order_.size() * width)
+    const std::vector<Index>& order = bins_.order();
+    if (field.size() != order.size() * width)
         throw Error("NeighbourSearch::applyOrder: field of " + std::to_string(field.size()) + " values for " +
-                    std::to_string(order_.size()) + " particles of width " + std::to_string(width));
+                    std::to_string(order.size()) + " particles of width " + std::to_string(width));
     const std::vector<T> old(field.begin(), field.end());
-    parallelFor(order_.size(), [&](std::size_t k) {
-        for (std::size_t c = 0; c < width; ++c)
-            field[k * width + c] = old[std::size_t(order_[k]) * width + c];
+    parallelFor(order.size(), [&](std::size_t k) {
+        for (std::size_t c = 0; c < width; ++c) field[k * width + c] = old[std::size_t(order[k]) * width + c];
     });
 }
 

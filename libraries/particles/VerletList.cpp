@@ -33,8 +33,10 @@ template <int Dim>
 double VerletList<Dim>::maxDisplacement(const std::vector<Vector<Dim>>& positions) const {
     if (!built_ || positions.size() != builtPosition_.size()) return 0.0;
     const NeighbourDomain<Dim>& domain = search_.domain();
-    // Max is exact, so Reduce::max is the same for any thread count.
-    return std::sqrt(Reduce::max(positions.size(), [&](std::size_t i) {
+    // Max is exact, so LocalReduce::max is the same for any thread count. Local: the rebuild is
+    // this rank's decision about its own list (behind the early return above, a global
+    // reduction would leave the other ranks waiting).
+    return std::sqrt(LocalReduce::max(positions.size(), [&](std::size_t i) {
         return domain.separation(positions[i], builtPosition_[i]).squaredNorm();
     }));
 }
@@ -45,9 +47,9 @@ bool VerletList<Dim>::needsRebuild(const std::vector<Vector<Dim>>& positions, co
     if (!built_ || positions.size() != builtPosition_.size()) return true;
     const std::size_t n = positions.size();
     if (n == 0) return false;
-    const double growth = constantRadius
-                              ? radius[0] - builtRadius_[0]
-                              : Reduce::max(n, [&](std::size_t i) { return radius[i] - builtRadius_[i]; });
+    const double growth =
+        constantRadius ? radius[0] - builtRadius_[0]
+                       : LocalReduce::max(n, [&](std::size_t i) { return radius[i] - builtRadius_[i]; });
     return 2 * maxDisplacement(positions) + std::max(growth, 0.0) > skin_;
 }
 

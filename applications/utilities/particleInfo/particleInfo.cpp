@@ -55,15 +55,15 @@ double valueOf(const FieldBase& f, std::size_t i, int c) {
 void printComponent(const FieldBase& f, int c, const std::string& label, const std::string& kind,
                     std::size_t& bad, std::size_t& first) {
     const std::size_t n = f.size();
-    const double lo = Reduce::min(n, [&](std::size_t i) {
+    const double lo = LocalReduce::min(n, [&](std::size_t i) {
         const double v = valueOf(f, i, c);
         return std::isfinite(v) ? v : std::numeric_limits<double>::infinity();
     });
-    const double hi = Reduce::max(n, [&](std::size_t i) {
+    const double hi = LocalReduce::max(n, [&](std::size_t i) {
         const double v = valueOf(f, i, c);
         return std::isfinite(v) ? v : -std::numeric_limits<double>::infinity();
     });
-    const std::size_t nonFinite = Reduce::sum<std::size_t>(
+    const std::size_t nonFinite = LocalReduce::sum<std::size_t>(
         n, [&](std::size_t i) { return std::size_t(!std::isfinite(valueOf(f, i, c))); });
     if (nonFinite > 0) {
         for (std::size_t i = 0; i < std::min(first, n); ++i)
