@@ -6,8 +6,10 @@
 #include "core/Registry.hpp"
 
 #include <dlfcn.h>
+#include <unistd.h>
 
 #include <cctype>
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 
@@ -49,6 +51,21 @@ std::filesystem::path sharedObjectPath(const void* address) {
 }
 
 }  // namespace
+
+void preferPassiveWaitPolicy(char** argv) {
+    // The user's (or a script's) choice stands; the marker stops a second exec should the variable
+    // somehow not reach the new image.
+    if (std::getenv("OMP_WAIT_POLICY") || std::getenv("GOMP_SPINCOUNT") ||
+        std::getenv("MFDYN_WAIT_POLICY_SET"))
+        return;
+    if (::setenv("OMP_WAIT_POLICY", "PASSIVE", 1) != 0 || ::setenv("MFDYN_WAIT_POLICY_SET", "1", 1) != 0)
+        return;
+    std::cout.flush();
+    ::execv("/proc/self/exe", argv);
+    // No /proc (or exec refused): run on in this image, whose OpenMP runtime already chose the
+    // default policy; only the speed beside other work suffers. What this process starts inherits
+    // the passive policy all the same.
+}
 
 const std::string& Arguments::value(const std::string& option) const {
     auto it = options_.find(option);
@@ -119,6 +136,7 @@ void loadToolkitLibraries() {
 
 int runApplication(int argc, char** argv, const ApplicationInfo& info,
                    const std::function<int(const Arguments&)>& body) {
+    preferPassiveWaitPolicy(argv);
     try {
         Arguments args = Arguments::parse(argc, argv, info);
         if (args.has("help")) {

@@ -56,6 +56,17 @@ std::string usage(const ApplicationInfo& info);
 // registrations are made (-listModels, -describe, mfDoc).
 void loadToolkitLibraries();
 
+// OpenMP's wait policy, chosen before the runtime starts. libgomp reads OMP_WAIT_POLICY and
+// GOMP_SPINCOUNT once, in a constructor that runs before main (measured with Debian 12's libgomp
+// 12.2: a setenv of OMP_WAIT_POLICY=ACTIVE in main is not honoured), and by default a waiting
+// thread spins before it sleeps. Beside another busy process on as many cores as threads, the
+// spinning thread takes the core that the thread it waits for needs: a run was 100-200 times
+// slower. So when neither variable is set, this sets OMP_WAIT_POLICY=PASSIVE (and the marker
+// MFDYN_WAIT_POLICY_SET=1) and replaces the process once with itself (execv of /proc/self/exe,
+// the same argv); the new image's runtime starts passive. A variable set by the user is kept.
+// Called first by runApplication; returns only when no exec was needed (or exec failed).
+void preferPassiveWaitPolicy(char** argv);
+
 // Parses arguments, answers -help/-listModels/-version itself, otherwise runs `body`, whose
 // return value is the exit status: 0 for a finished run, 128 + the signal number when a solver
 // was stopped by SIGINT (130) or SIGTERM (143) after writing its state (SolverRun::run).

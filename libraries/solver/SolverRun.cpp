@@ -11,6 +11,7 @@
 #include "particles/VtpReader.hpp"
 #include "solver/Solver.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -51,6 +52,9 @@ SolverRun::SolverRun(const Arguments& args, std::string application)
     // Libraries first: their models must be selectable before anything is read.
     LibraryLoader::load(controlDict_, case_.root());
     time_ = std::make_unique<Time>(case_.systemFile("controlDict"), controlDict_);
+    // Read now, not where it is used: the never-read check scans controlDict before it could
+    // read the switch there, and would report the switch itself, so that strict mode never passed.
+    strictDictionaries_ = controlDict_.getOrDefault<bool>("strictDictionaries", false);
 
     std::optional<TimeDirectory> start;
     if (time_->startFrom() == "latestTime") {
@@ -176,20 +180,52 @@ void SolverRun::purge() {
     *pvd_ = std::move(pvd);
 }
 
+namespace {
+
+// Whether `file` lies in one of the toolkit's etc/ directories (#includeEtc's search path).
+bool inEtc(const std::shared_ptr<const std::string>& file, const std::vector<fs::path>& etc) {
+    if (!file) return false;
+    std::error_code ec;
+    const fs::path path = fs::weakly_canonical(*file, ec);
+    if (ec) return false;
+    for (const fs::path& dir : etc) {
+        const fs::path root = fs::weakly_canonical(dir, ec);
+        if (ec) continue;
+        const auto [end, _] = std::mismatch(root.begin(), root.end(), path.begin(), path.end());
+        if (end == root.end()) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
 void SolverRun::checkUnusedEntries(const Solver& solver) const {
     std::vector<const Dictionary*> dicts{&controlDict_};
     for (const Dictionary* d : solver.dictionaries()) dicts.push_back(d);
-    std::ostringstream s;
-    int count = 0;
+    // A shared data sheet (etc/materials/copperTaylorBar) states more properties than any one
+    // model reads (E and nu beside the shear and bulk moduli): what the chosen models left of it
+    // is said, not warned of, and strict mode does not count it. A case's own entries all count.
+    const std::vector<fs::path> etc = etcDirectories();
+    std::ostringstream s, sheet;
+    int count = 0, sheetCount = 0;
     for (const Dictionary* d : dicts) {
         for (const UnusedEntry& u : d->unusedEntries()) {
+            if (inEtc(u.where.file, etc)) {
+                ++sheetCount;
+                sheet << "\n    " << u.where.str() << ": '" << u.scopedKey << "'";
+                continue;
+            }
             ++count;
             s << "\n    " << u.where.str() << ": '" << u.scopedKey << "' was never read";
             if (!u.suggestion.empty()) s << " (did you mean '" << u.suggestion << "'?)";
         }
     }
+    if (sheetCount)
+        Log::info(
+            std::to_string(sheetCount) +
+            " entries of the toolkit's data files (etc/) are not used by the models chosen:" + sheet.str());
     if (count == 0) return;
-    if (controlDict_.getOptional<bool>("strictDictionaries").value_or(false))
+    if (strictDictionaries_)
         throw InputError(std::to_string(count) +
                          " dictionary entries were never read (strictDictionaries yes):" + s.str());
     Log::warning(std::to_string(count) + " dictionary entries were never read:" + s.str());
@@ -280,8 +316,7 @@ int SolverRun::run(Solver& solver) {
     if (!stopSignal && !stoppedByControl && lastWritten_ != time.timeName()) write(solver);
     // A signal after the last step: the state is written all the same, and the status says so.
     if (!stopSignal) stopSignal = SignalHandler::stopRequested();
-    (void)startIndex;
-    summary(solver, stepping.seconds(), startTime);
+    summary(solver, stepping.seconds(), time.timeIndex() - startIndex);
 
     // Error norms beside the run time that bought them.
     const auto norms = functions.errorNorms();
@@ -324,10 +359,9 @@ int SolverRun::run(Solver& solver) {
     return status;
 }
 
-void SolverRun::summary(const Solver& solver, double steppingSeconds, double startTime) {
+void SolverRun::summary(const Solver& solver, double steppingSeconds, std::int64_t stepsRun) {
     const Time& time = *time_;
     const std::size_t n = const_cast<Solver&>(solver).particles().size();
-    (void)startTime;
     std::ostringstream s;
     char line[200];
     std::snprintf(line, sizeof line,
@@ -335,11 +369,12 @@ void SolverRun::summary(const Solver& solver, double steppingSeconds, double sta
                   formatSeconds(clock_.seconds()).c_str(), formatSeconds(setUpSeconds_).c_str(),
                   formatSeconds(steppingSeconds).c_str(), formatSeconds(writeSeconds_).c_str());
     s << line;
-    s << "    steps                " << time.timeIndex() << " to t = " << time.timeName() << "\n";
+    // After a restart the step index counts from t = 0; the rate is of the steps this run took.
+    s << "    steps                " << stepsRun << " (to step " << time.timeIndex()
+      << ", t = " << time.timeName() << ")\n";
     s << "    particles            " << n << "\n";
     std::snprintf(line, sizeof line, "    particle-steps/s     %.4g (%d threads)\n",
-                  steppingSeconds > 0 ? double(n) * double(time.timeIndex()) / steppingSeconds : 0.0,
-                  threadCount());
+                  steppingSeconds > 0 ? double(n) * double(stepsRun) / steppingSeconds : 0.0, threadCount());
     s << line;
     s << "    peak memory          " << formatBytes(double(peakMemoryBytes())) << "\n";
     for (const auto& [phase, seconds] : solver.phaseTimes()) {

@@ -59,7 +59,8 @@ private:
     void write(Solver& solver);
     void purge();
     void checkUnusedEntries(const Solver& solver) const;
-    void summary(const Solver& solver, double wallSeconds, double startTime);
+    // stepsRun: the steps of this run (not since t = 0), for the particle-steps/s figure.
+    void summary(const Solver& solver, double steppingSeconds, std::int64_t stepsRun);
 
     std::string application_;
     Case case_;
@@ -77,6 +78,7 @@ private:
     double writeSeconds_ = 0;
     double setUpSeconds_ = 0;
     std::string lastWritten_;
+    bool strictDictionaries_ = false;  // controlDict's strictDictionaries: never-read entries are errors
 };
 
 template <template <int> class SolverType>

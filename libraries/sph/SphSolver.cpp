@@ -118,6 +118,10 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
       material_(particles_->integerField("material")) {
     readMaterials();
     initialiseFields();
+    // Checked here, though the Verlet list is built on the first step: read there only, a correct
+    // entry would be reported never read (and fail strictDictionaries).
+    if (properties_.getOrDefault<double>("neighbourSkin", 0.2) < 0)
+        throw properties_.error("neighbourSkin", "the Verlet skin must be non-negative");
     if (const Dictionary* as = properties_.findDict("artificialStress")) {
         artificialStressEpsilon_ = as->getOrDefault<double>("epsilon", 0.3);
         artificialStressExponent_ = as->getOrDefault<double>("exponent", 4.0);
