@@ -9,7 +9,9 @@
 // s = X - clampX, k = kL/L with kL = 1.875 (the root of 1 + cos kL cosh kL = 0), so v_y(L) = V_f
 // at the free end, v_y = v_y' = 0 at the clamp; v_y = 0 for s <= 0 (inside the clamp), v_x = 0.
 // PySPH's Vf is a fraction of the sound speed (tip velocity Vf c0); here `velocity` is the tip
-// velocity itself in m/s. Thin plates (thickness << length) only: the shape ignores shear.
+// velocity itself in m/s. Thin plates (thickness << length) only: the shape ignores shear. The
+// formula lives with the references, in verification/CantileverModeShape; this adapter reads its
+// dictionary and places the clamp.
 //
 //     keyword    meaning                                         required  default
 //     length     L [m], > 0                                      yes
@@ -25,32 +27,25 @@
 namespace mfdyn {
 
 template <int Dim>
-CantileverMode<Dim>::CantileverMode(const Dictionary& dict)
-    : InitialState<Dim>(dict),
-      length_(dict.get<double>("length")),
-      velocity_(dict.get<double>("velocity")),
-      kL_(dict.getOrDefault<double>("kL", 1.875)),
-      clampX_(dict.getOrDefault<double>("clampX", 0.0)) {
+CantileverMode<Dim>::CantileverMode(const Dictionary& dict) : InitialState<Dim>(dict) {
+    // read in the order of the keyword table, as before the formula moved to verification/
+    const double length = dict.get<double>("length");
+    const double velocity = dict.get<double>("velocity");
+    const double kL = dict.getOrDefault<double>("kL", 1.875);
+    clampX_ = dict.getOrDefault<double>("clampX", 0.0);
     if (Dim < 2) throw dict.error("type", "cantileverMode needs a 2D or 3D case (the plate bends in y)");
-    if (!(length_ > 0)) throw dict.error("length", "expected a positive length [m]");
-    if (!(kL_ > 0)) throw dict.error("kL", "expected a positive mode number");
+    if (!(length > 0)) throw dict.error("length", "expected a positive length [m]");
+    if (!(kL > 0)) throw dict.error("kL", "expected a positive mode number");
     if (auto thickness = dict.getOptional<double>("thickness"))
-        if (!(*thickness > 0 && *thickness < length_))
+        if (!(*thickness > 0 && *thickness < length))
             throw dict.error("thickness", "expected 0 < thickness < length");
-    if (!std::isfinite(velocity_)) throw dict.error("velocity", "expected a finite velocity [m/s]");
-}
-
-template <int Dim>
-double CantileverMode<Dim>::shape(double s) const {
-    const double k = kL_ / length_, kL = kL_;
-    const double M = std::sin(kL) + std::sinh(kL), N = std::cos(kL) + std::cosh(kL);
-    return M * (std::cos(k * s) - std::cosh(k * s)) - N * (std::sin(k * s) - std::sinh(k * s));
+    if (!std::isfinite(velocity)) throw dict.error("velocity", "expected a finite velocity [m/s]");
+    mode_.emplace(length, velocity, kL);
 }
 
 template <int Dim>
 double CantileverMode<Dim>::transverseVelocity(double s) const {
-    if (s <= 0) return 0.0;
-    return velocity_ * shape(s) / shape(length_);
+    return mode_->transverseVelocity(s);
 }
 
 template <int Dim>

@@ -1,6 +1,10 @@
 #pragma once
-// initialState cantileverMode: the first bending mode velocity of a clamped plate. See CantileverMode.cpp.
+// initialState cantileverMode: the first bending mode velocity of a clamped plate. The formula is
+// verification/CantileverModeShape; this reads it from a dictionary. See CantileverMode.cpp.
 #include "solver/InitialState.hpp"
+#include "verification/CantileverModeShape.hpp"
+
+#include <optional>
 
 namespace mfdyn {
 
@@ -13,8 +17,8 @@ public:
     double transverseVelocity(double s) const;
 
 private:
-    double length_, velocity_, kL_, clampX_;
-    double shape(double s) const;
+    double clampX_ = 0;
+    std::optional<CantileverModeShape> mode_;  // set once the dictionary has been checked
 };
 
 extern template class CantileverMode<1>;

@@ -1,8 +1,9 @@
 // twistingColumn: v(X) = omega(X) x (X - c), omega = Omega sin(pi s/(2L)) e_axis, s = (X - c).e_axis,
 // u = 0: a column twisted by an angular velocity that grows from 0 at its clamped base (s = 0) to
-// Omega at its free end (s = L).
-//   Lee, Gil, Greto, Karim & Bonet 2016 section 8.9, Figs 24-28 (doc/methods/tl-jst-sph.md 8.9): Omega = 105
-//   rad/s, L = 6 m, axis Y, about the origin (the Fig 26 caption's Z is a typo).
+// Omega at its free end (s = L). The formula lives with the references, in
+// verification/TwistingColumnMotion; this adapter reads its dictionary.
+//   Lee, Gil, Greto, Karim & Bonet 2016 section 8.9, Figs 24-28 (doc/methods/tl-jst-sph.md 8.9):
+//   Omega = 105 rad/s, L = 6 m, axis Y, about the origin (the Fig 26 caption's Z is a typo).
 //
 //     keyword  meaning                                           required  default
 //     Omega    angular velocity at s = L [rad/s]                 yes
@@ -12,33 +13,30 @@
 // 3D only.
 #include "solver/TwistingColumn.hpp"
 
-#include <Eigen/Geometry>
-
-#include <cmath>
-#include <numbers>
+#include <string>
 
 namespace mfdyn {
 
 template <int Dim>
-TwistingColumn<Dim>::TwistingColumn(const Dictionary& dict)
-    : InitialState<Dim>(dict),
-      Omega_(dict.get<double>("Omega")),
-      length_(dict.get<double>("length")),
-      axis_(1),
-      centre_(dict.getOrDefault<Vector<Dim>>("centre", Vector<Dim>::Zero())) {
+TwistingColumn<Dim>::TwistingColumn(const Dictionary& dict) : InitialState<Dim>(dict) {
+    const double Omega = dict.get<double>("Omega");
+    const double length = dict.get<double>("length");
+    const Vector<Dim> centre = dict.getOrDefault<Vector<Dim>>("centre", Vector<Dim>::Zero());
     if (Dim != 3)
         throw dict.error("type",
                          "twistingColumn is a 3D initial state; this case is " + std::to_string(Dim) + "D");
-    if (!(length_ > 0)) throw dict.error("length", "expected a positive length [m]");
-    const std::string axis = dict.getOrDefault<std::string>("axis", "Y");
-    if (axis == "X" || axis == "x")
-        axis_ = 0;
-    else if (axis == "Y" || axis == "y")
-        axis_ = 1;
-    else if (axis == "Z" || axis == "z")
-        axis_ = 2;
+    if (!(length > 0)) throw dict.error("length", "expected a positive length [m]");
+    const std::string axisName = dict.getOrDefault<std::string>("axis", "Y");
+    int axis = 1;
+    if (axisName == "X" || axisName == "x")
+        axis = 0;
+    else if (axisName == "Y" || axisName == "y")
+        axis = 1;
+    else if (axisName == "Z" || axisName == "z")
+        axis = 2;
     else
-        throw dict.error("axis", "expected X, Y or Z, found '" + axis + "'");
+        throw dict.error("axis", "expected X, Y or Z, found '" + axisName + "'");
+    if constexpr (Dim == 3) motion_.emplace(Omega, length, axis, centre);
 }
 
 template <int Dim>
@@ -46,10 +44,7 @@ Vector<Dim> TwistingColumn<Dim>::velocity(const Vector<Dim>& X) const {
     if constexpr (Dim != 3) {
         return Vector<Dim>::Zero();  // not constructible
     } else {
-        const Eigen::Vector3d r = X - centre_;
-        Eigen::Vector3d omega = Eigen::Vector3d::Zero();
-        omega(axis_) = Omega_ * std::sin(std::numbers::pi * r(axis_) / (2 * length_));
-        return omega.cross(r);
+        return motion_->velocity(X);
     }
 }
 

@@ -1,7 +1,10 @@
 #pragma once
-// initialState twistingColumn (3D): v = omega(X) x (X - c), omega = Omega sin(pi s/(2L)) e_axis. See
-// TwistingColumn.cpp.
+// initialState twistingColumn (3D): v = omega(X) x (X - c), omega = Omega sin(pi s/(2L)) e_axis. The
+// formula is verification/TwistingColumnMotion; this reads it from a dictionary. See TwistingColumn.cpp.
 #include "solver/InitialState.hpp"
+#include "verification/TwistingColumnMotion.hpp"
+
+#include <optional>
 
 namespace mfdyn {
 
@@ -12,9 +15,7 @@ public:
     Vector<Dim> velocity(const Vector<Dim>& X) const override;
 
 private:
-    double Omega_, length_;
-    int axis_;
-    Vector<Dim> centre_;
+    std::optional<TwistingColumnMotion> motion_;  // set in 3D, the only dimension it is built in
 };
 
 extern template class TwistingColumn<1>;
