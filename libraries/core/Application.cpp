@@ -168,6 +168,13 @@ int runApplication(int argc, char** argv, const ApplicationInfo& info,
         std::cout.flush();
         std::cerr << "\nError: " << e.what() << "\n" << std::endl;
         return 1;
+    } catch (const std::filesystem::filesystem_error& e) {
+        // A path the system refuses to look at (a link to itself, no permission) is bad input,
+        // not a bug: name the path and the system's reason.
+        std::cout.flush();
+        std::cerr << "\nError: cannot access '" << e.path1().string() << "': " << e.code().message() << "\n"
+                  << std::endl;
+        return 1;
     } catch (const std::exception& e) {
         std::cout.flush();
         std::cerr << "\nError (internal): " << e.what() << "\n" << std::endl;

@@ -23,7 +23,11 @@ Case::Case(fs::path root) : root_(std::move(root)) {
 namespace {
 Dictionary readCaseFile(const fs::path& file) {
     std::error_code ec;
-    if (!fs::exists(file, ec)) throw InputError("cannot find " + file.string());
+    if (!fs::exists(file, ec)) {
+        // ec set: the file is there but cannot be looked at (a link to itself: ELOOP), not missing.
+        if (ec) throw InputError("cannot read " + file.string() + ": " + ec.message());
+        throw InputError("cannot find " + file.string());
+    }
     return Dictionary::read(file);
 }
 }  // namespace

@@ -27,6 +27,21 @@ std::string quote(const std::string& s) {
     return q + "\"";
 }
 
+// A key as the grammar reads it back: bare when it is a word (DictionaryParser.cpp: no leading
+// digit, no delimiter, blank, control byte or comment opening), else quoted. Keys written quoted,
+// such as "my (key", printed bare would not parse again (fuzz fixture quotedKeySyntaxCharacters).
+std::string keyText(const std::string& key) {
+    bool bare = !key.empty() && !(key.front() >= '0' && key.front() <= '9');
+    for (std::size_t i = 0; bare && i < key.size(); ++i) {
+        const auto c = static_cast<unsigned char>(key[i]);
+        const bool delimiter = c <= ' ' || c == 127 || c == '"' || c == ';' || c == '{' || c == '}' ||
+                               c == '(' || c == ')' || c == '$' || c == '#';
+        const bool comment = c == '/' && i + 1 < key.size() && (key[i + 1] == '/' || key[i + 1] == '*');
+        bare = !delimiter && !comment;
+    }
+    return bare ? key : quote(key);
+}
+
 // Shortest text that reads back as the same double, and still reads as a real, not an integer.
 std::string formatReal(double x) {
     char buf[64];
@@ -50,7 +65,7 @@ std::string joinTokens(const std::vector<Token>& tokens) {
 std::string inlineBody(const Dictionary& dict) {
     std::string s;
     for (const auto& e : dict.entries()) {
-        s += e->key;
+        s += keyText(e->key);
         if (e->isDict()) {
             s += " { " + inlineBody(*e->dict) + "} ";
         } else {
@@ -373,9 +388,9 @@ std::string Dictionary::str(int indent) const {
     std::string s;
     for (const auto& e : entries_) {
         if (e->isDict()) {
-            s += pad + e->key + "\n" + pad + "{\n" + e->dict->str(indent + 1) + pad + "}\n";
+            s += pad + keyText(e->key) + "\n" + pad + "{\n" + e->dict->str(indent + 1) + pad + "}\n";
         } else {
-            s += pad + e->key;
+            s += pad + keyText(e->key);
             if (!e->tokens.empty()) s += ' ' + joinTokens(e->tokens);
             s += ";\n";
         }

@@ -697,7 +697,7 @@ public:
                     } else {
                         {
                             const Deeper value(*this, src, s.begin);  // the grammar's level of a value
-                            e->tokens = expand(src, s.tokens, dict, s.key);
+                            e->tokens = expand(src, s.tokens, dict, s.key, true);
                         }
                         // `b $a;` with `a` a dictionary makes `b` a dictionary too.
                         if (e->tokens.size() == 1 && e->tokens.front().kind == Token::Kind::dictionary &&
@@ -988,8 +988,9 @@ private:
                     " (does each macro repeat the one before, as in 'b ($a $a); c ($b $b);'?)");
     }
 
+    // `inValue`: `in` are the tokens of an entry's value, not of a list inside it.
     std::vector<Token> expand(const Source& src, const std::vector<AstToken>& in, Dictionary& dict,
-                              const std::string& key) {
+                              const std::string& key, bool inValue = false) {
         std::vector<Token> out;
         out.reserve(in.size());
         for (std::size_t i = 0; i < in.size(); ++i) {
@@ -1027,6 +1028,15 @@ private:
                     const Entry* e = findMacro(src, a.text, a.begin, dict);
                     chargeMacro(src, a.begin, a.text, *e, false);
                     if (e->isDict()) {
+                        // As in OpenFOAM, a dictionary macro stands for a whole entry (`b $a;`,
+                        // `b { $a; }`) or an item of a list. Among other tokens of a value
+                        // (`d $a 5;`) it made a value with no text: `d { ... } 5;` does not parse.
+                        if (inValue && in.size() != 1)
+                            fail(src, a.begin,
+                                 "'$" + excerpt(a.text) +
+                                     "' is a dictionary and cannot stand among the tokens of a value (use it "
+                                     "alone, as in '" +
+                                     excerpt(key) + " $" + excerpt(a.text) + ";', or inside a list)");
                         t.kind = Token::Kind::dictionary;
                         t.dict = std::make_shared<Dictionary>(*e->dict);
                         t.dict->closeBraceOffset = std::string::npos;
@@ -1085,8 +1095,9 @@ Dictionary Dictionary::parse(std::string_view text, const std::string& fileName,
 
 Dictionary Dictionary::read(const std::filesystem::path& file, const ReadOptions& options) {
     std::error_code ec;
-    if (!fs::is_regular_file(file, ec))
-        throw InputError("cannot open dictionary file '" + excerpt(file.string(), 200) + "'");
+    if (!fs::is_regular_file(file, ec))  // ec: the system's reason, e.g. a link to itself (ELOOP)
+        throw InputError("cannot open dictionary file '" + excerpt(file.string(), 200) + "'" +
+                         (ec ? ": " + ec.message() : std::string()));
     return parse(readFile(file), file.string(), options);
 }
 

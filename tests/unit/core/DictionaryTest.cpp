@@ -2,6 +2,7 @@
 // leading comments), then typed look-up, tracking, editing and copying.
 #include "core/Dictionary.hpp"
 
+#include "core/Application.hpp"
 #include "core/Case.hpp"
 #include "core/MessageText.hpp"
 
@@ -716,4 +717,79 @@ TEST(CaseDirectory, unlistableDirectoryIsAnInputError) {
     dir.reset();
     const std::string what = errorOf([&] { c.timeDirectories(); });
     EXPECT_TRUE(has(what, "cannot list the case directory '" + gone.string() + "': ")) << what;
+}
+
+// ------------------------------------------------------------------------------------------
+// Printing defects found by fuzz.inProcess, and self-linked files (issue 14).
+
+// Keys written quoted may hold syntax characters; str() printed them bare ("my (key 5;"), which
+// does not parse again. Each such key must come back the same, in sub-dictionaries and in a
+// dictionary inside a list too (printed inline).
+TEST(DictionaryPrinting, quotedKeysWithSyntaxCharactersRoundTrip) {
+    const std::string text = R"D("my (key" 5; "c)" x; "d}" y; "e{" z; "f;g" 1; "a$$b" 2; "#h" 3; "i//j" 4;
+"7k" 5; "q\"r" 6; "s t" 7; sub { "u;v" w; } l ( { "x)y" 1; } ); plain/key 8;)D";
+    const Dictionary d = Dictionary::parse(text, "quoted");
+    const std::string printed = d.str();
+    EXPECT_TRUE(has(printed, "\"my (key\" 5;\n")) << printed;
+    EXPECT_TRUE(has(printed, "\"q\\\"r\" 6;\n")) << printed;  // the quote inside escaped
+    EXPECT_TRUE(has(printed, "plain/key 8;\n")) << printed;   // a word stays bare
+    Dictionary again;
+    ASSERT_NO_THROW(again = Dictionary::parse(printed, "printed")) << printed;
+    EXPECT_EQ(again.keys(), d.keys());
+    EXPECT_EQ(again.str(), printed);
+    for (const std::string key :
+         {"my (key", "c)", "d}", "e{", "f;g", "a$$b", "#h", "i//j", "7k", "q\"r", "s t"})
+        EXPECT_TRUE(again.findScoped(key) != nullptr) << key;
+    EXPECT_EQ(again.subDict("sub").get<std::string>("u;v"), "w");
+}
+
+// `d $a 5;` with `a` a dictionary made a value `{ b { c 5; } } 5` that prints as text that does
+// not parse. As in OpenFOAM, a dictionary macro stands only as a whole entry or a list item.
+TEST(DictionaryMacros, dictionaryMacroAmongValueTokensIsRefusedAtTheMacro) {
+    EXPECT_EQ(errorOf([] { Dictionary::parse("a { b { c 5; } }\nd $a $a.b.c;\n", "m"); }),
+              "m:2:3: '$a' is a dictionary and cannot stand among the tokens of a value (use it alone, as in "
+              "'d $a;', or inside a list)");
+    EXPECT_TRUE(
+        has(errorOf([] { Dictionary::parse("a { c 5; }\nd 1 $a;\n", "m"); }), "m:2:5: '$a' is a dictionary"));
+    // Still accepted: the whole entry, a merge into a block, a list item; each round-trips.
+    const Dictionary d = Dictionary::parse("a { c 5; }\nd $a;\ne { $a; f 1; }\ng ($a 2);\n", "m");
+    EXPECT_EQ(d.subDict("d").get<int>("c"), 5);
+    EXPECT_EQ(d.subDict("e").get<int>("c"), 5);
+    const std::string printed = d.str();
+    EXPECT_EQ(Dictionary::parse(printed, "printed").str(), printed);
+}
+
+// A dictionary file that is a symbolic link to itself: the system's reason (ELOOP) is the
+// message, not "cannot find" (Case) or a bare "cannot open" (Dictionary::read).
+TEST(DictionaryFiles, selfLinkedFileNamesTheSystemsReason) {
+    TempDir dir("mfdynSelfLink");
+    fs::create_directories(dir.path / "system");
+    const fs::path link = dir.path / "system" / "controlDict";
+    fs::create_symlink("controlDict", link);
+    const std::string loop = std::make_error_code(std::errc::too_many_symbolic_link_levels).message();
+    EXPECT_EQ(errorOf([&] { Dictionary::read(link); }),
+              "cannot open dictionary file '" + link.string() + "': " + loop);
+    EXPECT_EQ(errorOf([&] { Case(dir.path).readSystem("controlDict"); }),
+              "cannot read " + link.string() + ": " + loop);
+}
+
+// A std::filesystem::filesystem_error that escapes an application's body (a self-linked file
+// stat'ed without an error code somewhere) was "Error (internal)"; it is bad input: exit status 1
+// and a message naming the path and the system's reason.
+TEST(ApplicationErrors, filesystemErrorIsAnInputErrorNamingThePath) {
+    ::setenv("MFDYN_WAIT_POLICY_SET", "1", 0);  // no re-exec of the test binary (Application.hpp)
+    char name[] = "selfLinkApp";
+    char* argv[] = {name, nullptr};
+    ApplicationInfo info;
+    info.name = "selfLinkApp";
+    info.usesCase = false;
+    const auto loop = std::make_error_code(std::errc::too_many_symbolic_link_levels);
+    testing::internal::CaptureStderr();
+    const int status = runApplication(1, argv, info, [&](const Arguments&) -> int {
+        throw fs::filesystem_error("status", fs::path("case/system/controlDict"), loop);
+    });
+    const std::string err = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(status, 1);
+    EXPECT_TRUE(has(err, "Error: cannot access 'case/system/controlDict': " + loop.message())) << err;
+    EXPECT_FALSE(has(err, "internal")) << err;
 }
