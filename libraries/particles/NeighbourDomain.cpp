@@ -1,6 +1,7 @@
 #include "particles/NeighbourDomain.hpp"
 
 #include "core/Error.hpp"
+#include "core/KeywordSchema.hpp"  // formatKeywordNumber: 1e-320 shows as 9.99989e-321, not 0.000000
 
 #include <string>
 
@@ -13,8 +14,8 @@ NeighbourDomain<Dim>::NeighbourDomain(const Vector<Dim>& lo, const Vector<Dim>& 
     for (int k = 0; k < Dim; ++k) {
         if (!(std::isfinite(lo[k]) && std::isfinite(hi[k]) && hi[k] > lo[k]))
             throw Error("neighbour search domain: direction " + std::to_string(k) +
-                        " needs lo < hi, found [" + std::to_string(lo[k]) + ", " + std::to_string(hi[k]) +
-                        "]");
+                        " needs lo < hi, found [" + formatKeywordNumber(lo[k]) + ", " +
+                        formatKeywordNumber(hi[k]) + "]");
         period_[k] = periodic[k] ? hi[k] - lo[k] : 0.0;
         anyPeriodic_ = anyPeriodic_ || periodic[k];
     }

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "core/Error.hpp"
+#include "core/KeywordSchema.hpp"  // formatKeywordNumber: 1e-320 shows as 9.99989e-321, not 0.000000
 
 namespace mfdyn {
 
@@ -26,7 +27,7 @@ EllipticalDrop::EllipticalDrop(double A0, double stepsPerUnit) : A0_(A0), stepsP
 }
 
 EllipticalDrop::State EllipticalDrop::state(double t) const {
-    if (!(t >= 0.0)) throw Error("EllipticalDrop: time must be >= 0, found " + std::to_string(t));
+    if (!(t >= 0.0)) throw Error("EllipticalDrop: time must be >= 0, found " + formatKeywordNumber(t));
     // y = (a, b, A).
     auto rate = [](const State& y) {
         const double a2 = y.a * y.a, b2 = y.b * y.b;

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/Error.hpp"
+#include "core/KeywordSchema.hpp"  // formatKeywordNumber: 1e-320 shows as 9.99989e-321, not 0.000000
 
 namespace mfdyn {
 
@@ -27,7 +28,7 @@ ErrorNorms ErrorNorms::compute(std::span<const double> x, std::span<const double
     double sum1 = 0.0, sum2 = 0.0;
     for (std::size_t i = 0; i < x.size(); ++i) {
         if (!(weights[i] >= 0.0) || !std::isfinite(weights[i]))
-            throw Error("ErrorNorms: weight " + std::to_string(i) + " is " + std::to_string(weights[i]) +
+            throw Error("ErrorNorms: weight " + std::to_string(i) + " is " + formatKeywordNumber(weights[i]) +
                         "; weights must be finite and >= 0");
         if (x[i] < x0 || x[i] > x1) continue;
         const double e = values[i] - exact(x[i]);

@@ -32,6 +32,7 @@
 #include <sstream>
 
 #include "core/Error.hpp"
+#include "core/KeywordSchema.hpp"  // formatKeywordNumber: 1e-320 shows as 9.99989e-321, not 0.000000
 
 namespace mfdyn {
 
@@ -40,23 +41,25 @@ RiemannEquationOfState::RiemannEquationOfState(Kind kind, double gamma, double p
 
 RiemannEquationOfState RiemannEquationOfState::idealGas(double gamma) {
     if (!(gamma > 1.0))
-        throw Error("RiemannEquationOfState::idealGas: gamma must be > 1, found " + std::to_string(gamma));
+        throw Error("RiemannEquationOfState::idealGas: gamma must be > 1, found " +
+                    formatKeywordNumber(gamma));
     return {Kind::idealGas, gamma, 0.0, 0.0, 0.0};
 }
 
 RiemannEquationOfState RiemannEquationOfState::stiffenedGas(double gamma, double pRef) {
     if (!(gamma > 1.0))
         throw Error("RiemannEquationOfState::stiffenedGas: gamma must be > 1, found " +
-                    std::to_string(gamma));
+                    formatKeywordNumber(gamma));
     if (!(pRef >= 0.0))
-        throw Error("RiemannEquationOfState::stiffenedGas: pRef must be >= 0, found " + std::to_string(pRef));
+        throw Error("RiemannEquationOfState::stiffenedGas: pRef must be >= 0, found " +
+                    formatKeywordNumber(pRef));
     return {Kind::stiffenedGas, gamma, pRef, 0.0, 0.0};
 }
 
 RiemannEquationOfState RiemannEquationOfState::linearBarotropic(double rho0, double c0) {
     if (!(rho0 > 0.0) || !(c0 > 0.0))
         throw Error("RiemannEquationOfState::linearBarotropic: rho0 and c0 must be > 0, found rho0 = " +
-                    std::to_string(rho0) + ", c0 = " + std::to_string(c0));
+                    formatKeywordNumber(rho0) + ", c0 = " + formatKeywordNumber(c0));
     return {Kind::linearBarotropic, 0.0, 0.0, rho0, c0};
 }
 

@@ -12,6 +12,7 @@
 #include <cmath>
 
 #include "core/Error.hpp"
+#include "core/KeywordSchema.hpp"  // formatKeywordNumber: 1e-320 shows as 9.99989e-321, not 0.000000
 
 namespace mfdyn {
 
@@ -21,7 +22,7 @@ ShockTubeSolution::ShockTubeSolution(double x0, const PrimitiveState& left,
     : x0_(x0), solver_(left, leftEos, right, rightEos) {}
 
 FlowState ShockTubeSolution::state(double x, double t) const {
-    if (t < 0.0) throw Error("ShockTubeSolution: time must be >= 0, found " + std::to_string(t));
+    if (t < 0.0) throw Error("ShockTubeSolution: time must be >= 0, found " + formatKeywordNumber(t));
     if (t == 0.0) return x <= x0_ ? solver_.leftState() : solver_.rightState();
     return solver_.sample((x - x0_) / t);
 }
