@@ -1,0 +1,325 @@
+#include "meshfreeOperators/LeastSquaresOperators.hpp"
+
+#include "core/Error.hpp"
+#include "core/Parallel.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace mfdyn {
+
+namespace {
+
+// The largest basis: value form, order 2, 3D: 1 + 3 + 6. Fixed maximum sizes keep the per-point
+// matrices on the stack, so a rebuild allocates nothing inside its parallel loop.
+constexpr int maxBasis = 10;
+using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, maxBasis, maxBasis>;
+using Column = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, maxBasis, 1>;
+
+template <int Dim>
+std::string describe(const Vector<Dim>& x) {
+    std::ostringstream out;
+    out.precision(9);
+    out << '(';
+    for (int i = 0; i < Dim; ++i) out << (i ? " " : "") << x[i];
+    out << ')';
+    return out.str();
+}
+
+// The basis row p(s) in the layout [1 (value form)] [s_i] [s_i^2 / 2] [s_i s_j, i < j].
+template <int Dim>
+void basis(const Vector<Dim>& s, int order, int offset, Column& p) {
+    if (offset) p(0) = 1.0;
+    for (int i = 0; i < Dim; ++i) p(offset + i) = s[i];
+    if (order < 2) return;
+    int q = offset + Dim;
+    for (int i = 0; i < Dim; ++i) p(q++) = 0.5 * s[i] * s[i];
+    for (int i = 0; i < Dim; ++i)
+        for (int j = i + 1; j < Dim; ++j) p(q++) = s[i] * s[j];
+}
+
+}  // namespace
+
+template <int Dim>
+LeastSquaresOperators<Dim>::LeastSquaresOperators(Options options) : options_(options) {
+    if (options_.order != 1 && options_.order != 2)
+        throw Error("LeastSquaresOperators: order " + std::to_string(options_.order) +
+                    "; valid orders: 1 (linear basis), 2 (quadratic basis)");
+    if (!(options_.minReciprocalCondition > 0.0) || !(options_.minReciprocalCondition < 1.0))
+        throw Error("LeastSquaresOperators: minReciprocalCondition must lie in (0, 1)");
+}
+
+template <int Dim>
+int LeastSquaresOperators<Dim>::basisSize() const {
+    return (options_.form == Form::value ? 1 : 0) + Dim + (options_.order == 2 ? Dim * (Dim + 1) / 2 : 0);
+}
+
+template <int Dim>
+std::string LeastSquaresOperators<Dim>::statusName(Status status) {
+    switch (status) {
+        case Status::ok:
+            return "ok";
+        case Status::tooFewNeighbours:
+            return "too few neighbours with a positive weight for the basis";
+        case Status::illConditioned:
+            return "singular or ill-conditioned moment matrix";
+    }
+    return "unknown";
+}
+
+template <int Dim>
+void LeastSquaresOperators<Dim>::rebuild(const std::vector<Vector<Dim>>& points,
+                                         const std::vector<Vector<Dim>>& x, const NeighbourList& rows,
+                                         const std::vector<double>& volume, const std::vector<double>& h,
+                                         const Kernel& kernel, KernelWeight shape) {
+    if (rows.size() != points.size() || h.size() != points.size() || volume.size() != x.size())
+        throw Error("LeastSquaresOperators: " + std::to_string(points.size()) + " points, " +
+                    std::to_string(rows.size()) + " rows, " + std::to_string(h.size()) +
+                    " smoothing lengths, " + std::to_string(x.size()) + " particles, " +
+                    std::to_string(volume.size()) + " volumes");
+    const auto& offsets = rows.offsets();
+    const auto& indices = rows.indices();
+    weightBuffer_.resize(rows.pairCount());
+    const KernelEvaluator<Dim> W = kernel.evaluator<Dim>();
+    parallelForWork(points.size(), rows.pairCount(), [&](std::size_t a) {
+        for (std::size_t k = offsets[a]; k < offsets[a + 1]; ++k) {
+            const std::size_t b = indices[k];
+            const double d = (points[a] - x[b]).norm();
+            if (shape == KernelWeight::value) {
+                weightBuffer_[k] = volume[b] * W.W(d, h[a]);
+            } else {
+                // W' <= 0 inside the support, so -V W'/r is a non-negative weight; self adds nothing.
+                weightBuffer_[k] = d > 0.0 ? -volume[b] * W.dWdr(d, h[a]) / d : 0.0;
+            }
+        }
+    });
+    rebuild(points, x, rows, weightBuffer_, h);
+}
+
+template <int Dim>
+void LeastSquaresOperators<Dim>::rebuild(const std::vector<Vector<Dim>>& points,
+                                         const std::vector<Vector<Dim>>& x, const NeighbourList& rows,
+                                         const std::vector<double>& weights,
+                                         const std::vector<double>& scale) {
+    const std::size_t n = points.size();
+    if (rows.size() != n || scale.size() != n || weights.size() != rows.pairCount())
+        throw Error("LeastSquaresOperators: " + std::to_string(n) + " points, " +
+                    std::to_string(rows.size()) + " rows, " + std::to_string(scale.size()) + " scales, " +
+                    std::to_string(weights.size()) + " weights for " + std::to_string(rows.pairCount()) +
+                    " pairs");
+    if (options_.form == Form::difference && n != x.size())
+        throw Error("LeastSquaresOperators: the difference form evaluates at the particles (" +
+                    std::to_string(x.size()) + "), not at " + std::to_string(n) + " other points");
+    for (std::size_t a = 0; a < n; ++a)
+        if (!(scale[a] > 0.0) || !std::isfinite(scale[a]))
+            throw Error("LeastSquaresOperators: point " + std::to_string(a) + " at " +
+                        describe<Dim>(points[a]) + " has length scale " + std::to_string(scale[a]) +
+                        "; it must be positive");
+    for (const auto b : rows.indices())
+        if (b >= x.size())
+            throw Error("LeastSquaresOperators: neighbour index " + std::to_string(b) + " for " +
+                        std::to_string(x.size()) + " particles");
+
+    particles_ = x.size();
+    offsets_.assign(rows.offsets().begin(), rows.offsets().end());
+    indices_.assign(rows.indices().begin(), rows.indices().end());
+    status_.resize(n);
+    const std::size_t pairs = indices_.size();
+    const bool second = options_.order == 2;
+    const bool valueForm = options_.form == Form::value;
+    // resize keeps the capacity: no reallocation while the pair count does not grow.
+    gradient_.resize(pairs);
+    hessian_.resize(second ? pairs : 0);
+    laplacian_.resize(second ? pairs : 0);
+    value_.resize(valueForm ? pairs : 0);
+
+    const int m = basisSize();
+    const int offset = valueForm ? 1 : 0;
+    parallelForWork(n, pairs, [&](std::size_t a) {
+        const std::size_t k0 = offsets_[a], k1 = offsets_[a + 1];
+        const double invScale = 1.0 / scale[a];
+        double sum = 0.0;
+        int used = 0;
+        for (std::size_t k = k0; k < k1; ++k) {
+            const double w = weights[k];
+            if (!(w > 0.0)) continue;
+            sum += w;
+            // In the difference form a pair at the point itself has p = 0 and carries nothing.
+            if (valueForm || x[indices_[k]] != points[a]) ++used;
+        }
+        auto fail = [&](Status why) {
+            status_[a] = why;
+            for (std::size_t k = k0; k < k1; ++k) {
+                gradient_[k].setZero();
+                if (second) {
+                    hessian_[k].setZero();
+                    laplacian_[k] = 0.0;
+                }
+                if (valueForm) value_[k] = 0.0;
+            }
+        };
+        if (used < m || !std::isfinite(sum)) return fail(Status::tooFewNeighbours);
+
+        // Normalised weights: phi is unchanged and M is O(1).
+        const double invSum = 1.0 / sum;
+        Matrix M = Matrix::Zero(m, m);
+        Column p(m);
+        for (std::size_t k = k0; k < k1; ++k) {
+            const double w = weights[k];
+            if (!(w > 0.0)) continue;
+            basis<Dim>(Vector<Dim>((x[indices_[k]] - points[a]) * invScale), options_.order, offset, p);
+            M.noalias() += (w * invSum) * p * p.transpose();
+        }
+        if (!M.allFinite()) return fail(Status::illConditioned);
+        const Eigen::SelfAdjointEigenSolver<Matrix> eigen(M, Eigen::EigenvaluesOnly);
+        const auto& lambda = eigen.eigenvalues();  // ascending
+        if (eigen.info() != Eigen::Success || !(lambda(m - 1) > 0.0) ||
+            !(lambda(0) >= options_.minReciprocalCondition * lambda(m - 1)))
+            return fail(Status::illConditioned);
+        const Eigen::LDLT<Matrix> ldlt(M);
+        status_[a] = Status::ok;
+
+        const double invScale2 = invScale * invScale;
+        for (std::size_t k = k0; k < k1; ++k) {
+            const double w = weights[k];
+            if (!(w > 0.0)) {  // outside the weight's support: this pair carries nothing
+                gradient_[k].setZero();
+                if (second) {
+                    hessian_[k].setZero();
+                    laplacian_[k] = 0.0;
+                }
+                if (valueForm) value_[k] = 0.0;
+                continue;
+            }
+            basis<Dim>(Vector<Dim>((x[indices_[k]] - points[a]) * invScale), options_.order, offset, p);
+            const Column phi = (w * invSum) * ldlt.solve(p);
+            if (valueForm) value_[k] = phi(0);
+            for (int i = 0; i < Dim; ++i) gradient_[k][i] = phi(offset + i) * invScale;
+            if (second) {
+                Tensor<Dim>& H = hessian_[k];
+                int q = offset + Dim;
+                for (int i = 0; i < Dim; ++i) H(i, i) = phi(q++) * invScale2;
+                for (int i = 0; i < Dim; ++i)
+                    for (int j = i + 1; j < Dim; ++j) H(i, j) = H(j, i) = phi(q++) * invScale2;
+                laplacian_[k] = H.trace();
+            }
+        }
+    });
+
+    if (options_.onFailure == OnFailure::flag) return;
+    const auto it = std::find_if(status_.begin(), status_.end(), [](Status s) { return s != Status::ok; });
+    if (it == status_.end()) return;
+    const std::size_t a = std::size_t(it - status_.begin());
+    const auto count =
+        std::count_if(status_.begin(), status_.end(), [](Status s) { return s != Status::ok; });
+    std::ostringstream msg;
+    msg << "LeastSquaresOperators: point " << a << " at " << describe<Dim>(points[a]) << " has a "
+        << statusName(*it) << " (" << (offsets_[a + 1] - offsets_[a]) << " neighbours, order "
+        << options_.order << ", " << m << " basis terms";
+    if (count > 1) msg << "; " << count - 1 << " more points fail alike";
+    msg << "). Too few neighbours, or all on a line or plane: increase h relative to the particle spacing,"
+           " or remove isolated particles.";
+    throw Error(msg.str());
+}
+
+template <int Dim>
+const std::vector<Tensor<Dim>>& LeastSquaresOperators<Dim>::hessian() const {
+    if (options_.order != 2) throw Error("LeastSquaresOperators::hessian: needs order 2");
+    return hessian_;
+}
+
+template <int Dim>
+const std::vector<double>& LeastSquaresOperators<Dim>::laplacian() const {
+    if (options_.order != 2) throw Error("LeastSquaresOperators::laplacian: needs order 2");
+    return laplacian_;
+}
+
+template <int Dim>
+const std::vector<double>& LeastSquaresOperators<Dim>::value() const {
+    if (options_.form != Form::value) throw Error("LeastSquaresOperators::value: needs the value form");
+    return value_;
+}
+
+template <int Dim>
+void LeastSquaresOperators<Dim>::checkField(std::size_t n, const char* what) const {
+    if (n != particles_)
+        throw Error(std::string("LeastSquaresOperators::") + what + ": " + std::to_string(n) +
+                    " values for " + std::to_string(particles_) + " particles");
+}
+
+template <int Dim>
+std::vector<double> LeastSquaresOperators<Dim>::valueOf(const std::vector<double>& f) const {
+    checkField(f.size(), "valueOf");
+    const auto& v = value();
+    std::vector<double> out(size());
+    parallelForWork(size(), pairCount(), [&](std::size_t a) {
+        double s = 0.0;
+        for (std::size_t k = offsets_[a]; k < offsets_[a + 1]; ++k) s += v[k] * f[indices_[k]];
+        out[a] = s;
+    });
+    return out;
+}
+
+template <int Dim>
+std::vector<Vector<Dim>> LeastSquaresOperators<Dim>::gradientOf(const std::vector<double>& f) const {
+    checkField(f.size(), "gradientOf");
+    std::vector<Vector<Dim>> out(size());
+    parallelForWork(size(), pairCount(), [&](std::size_t a) {
+        const double fa = centre(f, a);
+        Vector<Dim> g = Vector<Dim>::Zero();
+        for (std::size_t k = offsets_[a]; k < offsets_[a + 1]; ++k) g += (f[indices_[k]] - fa) * gradient_[k];
+        out[a] = g;
+    });
+    return out;
+}
+
+template <int Dim>
+std::vector<Tensor<Dim>> LeastSquaresOperators<Dim>::gradientOf(const std::vector<Vector<Dim>>& f) const {
+    checkField(f.size(), "gradientOf");
+    std::vector<Tensor<Dim>> out(size());
+    parallelForWork(size(), pairCount(), [&](std::size_t a) {
+        const Vector<Dim> fa = options_.form == Form::difference ? f[a] : Vector<Dim>::Zero();
+        Tensor<Dim> G = Tensor<Dim>::Zero();
+        for (std::size_t k = offsets_[a]; k < offsets_[a + 1]; ++k)
+            G.noalias() += (f[indices_[k]] - fa) * gradient_[k].transpose();
+        out[a] = G;
+    });
+    return out;
+}
+
+template <int Dim>
+std::vector<Tensor<Dim>> LeastSquaresOperators<Dim>::hessianOf(const std::vector<double>& f) const {
+    checkField(f.size(), "hessianOf");
+    const auto& H = hessian();
+    std::vector<Tensor<Dim>> out(size());
+    parallelForWork(size(), pairCount(), [&](std::size_t a) {
+        const double fa = centre(f, a);
+        Tensor<Dim> s = Tensor<Dim>::Zero();
+        for (std::size_t k = offsets_[a]; k < offsets_[a + 1]; ++k) s += (f[indices_[k]] - fa) * H[k];
+        out[a] = s;
+    });
+    return out;
+}
+
+template <int Dim>
+std::vector<double> LeastSquaresOperators<Dim>::laplacianOf(const std::vector<double>& f) const {
+    checkField(f.size(), "laplacianOf");
+    const auto& L = laplacian();
+    std::vector<double> out(size());
+    parallelForWork(size(), pairCount(), [&](std::size_t a) {
+        const double fa = centre(f, a);
+        double s = 0.0;
+        for (std::size_t k = offsets_[a]; k < offsets_[a + 1]; ++k) s += (f[indices_[k]] - fa) * L[k];
+        out[a] = s;
+    });
+    return out;
+}
+
+template class LeastSquaresOperators<1>;
+template class LeastSquaresOperators<2>;
+template class LeastSquaresOperators<3>;
+
+}  // namespace mfdyn
