@@ -18,7 +18,9 @@
 // are added in block order.
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -58,16 +60,24 @@ struct SumArray {
     }
 };
 
+// How many global reductions this process has made. Counted so that a test can show that code
+// meant to be rank-local (the neighbour search, the Verlet list) never reaches the MPI hook, where
+// behind a rank-local early return it would deadlock; one relaxed increment per reduction.
+inline std::atomic<std::uint64_t> globalReductionCount{0};
+
 // The global hooks: the one place an MPI build changes. On one process they return their
-// argument. `T` for globalSum is anything Reduce-summable (double, size_t, SumArray<N>).
+// argument. `T` for globalSum is anything summable by LocalReduce (double, size_t, SumArray<N>).
 template <class T>
 T globalSum(const T& local) {
+    globalReductionCount.fetch_add(1, std::memory_order_relaxed);
     return local;
 }
 inline double globalMax(double local) {
+    globalReductionCount.fetch_add(1, std::memory_order_relaxed);
     return local;
 }
 inline double globalMin(double local) {
+    globalReductionCount.fetch_add(1, std::memory_order_relaxed);
     return local;
 }
 

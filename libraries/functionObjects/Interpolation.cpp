@@ -35,15 +35,11 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 
 namespace mfdyn {
 
 namespace {
-// Cell indices are packed 21 bits per axis, offset so that negatives fit.
-constexpr std::int64_t cellBits = 21;
-constexpr std::int64_t cellOffset = std::int64_t(1) << (cellBits - 1);
-constexpr std::int64_t cellLimit = cellOffset - 2;
-
 // Below this reciprocal condition number of the scaled moment matrix the linear fit is treated
 // as undetermined: its entries are O(1) after scaling by H, so 1e-10 leaves many digits for
 // the solve while still catching neighbours that are (nearly) collinear.
@@ -135,64 +131,53 @@ void Interpolation::update() {
     }
 
     maxSupport_ = 0.0;
-    cells_.clear();
     for (double h : h_) maxSupport_ = std::max(maxSupport_, kernel_->supportRadius(h));
-    if (n == 0) return;
-    origin_ = position_[0];
-    for (const auto& x : position_)
-        for (int c = 0; c < 3; ++c) origin_[c] = std::min(origin_[c], x[c]);
-    for (std::size_t i = 0; i < n; ++i) {
-        const auto cell = cellOf(position_[i]);
-        for (int c = 0; c < 3; ++c)
-            if (cell[c] > cellLimit)
-                throw Error("interpolation: the particles span more than 2^20 support radii; h is too small");
-        cells_[key(cell)].push_back(i);
-    }
+    // Cells half the largest support wide: the query cuts the rows of cells to the sphere, so
+    // narrower cells scan less than the 3^d cells of one support; any width gives the same set.
+    auto binAll = [&](auto& bins) {
+        using V = typename std::remove_cvref_t<decltype(bins.sortedPositions())>::value_type;
+        std::vector<V> x(n);
+        for (std::size_t i = 0; i < n; ++i)
+            for (int c = 0; c < V::RowsAtCompileTime; ++c) x[i][c] = position_[i][c];
+        bins.bin(x, 0.5 * maxSupport_);
+    };
+    if (dim_ == 1)
+        binAll(bins1_);
+    else if (dim_ == 2)
+        binAll(bins2_);
+    else
+        binAll(bins3_);
 }
 
 Interpolation::~Interpolation() = default;
 
-Interpolation::CellKey Interpolation::key(const std::array<std::int64_t, 3>& cell) const {
-    return ((cell[0] + cellOffset) << (2 * cellBits)) | ((cell[1] + cellOffset) << cellBits) |
-           (cell[2] + cellOffset);
-}
-
-std::array<std::int64_t, 3> Interpolation::cellOf(const SamplePoint& x) const {
-    std::array<std::int64_t, 3> cell{0, 0, 0};
-    for (int c = 0; c < dim_; ++c) {
-        // Clamped so that far-away points give an out-of-range cell rather than an overflow.
-        const double t = std::floor((x[c] - origin_[c]) / maxSupport_);
-        cell[c] = std::int64_t(std::clamp(t, -double(cellOffset), double(cellOffset)));
-    }
-    return cell;
+template <int Dim>
+void Interpolation::gather(const CellBins<Dim>& bins, const SamplePoint& x, Stencil& s) const {
+    Vector<Dim> point;
+    for (int k = 0; k < Dim; ++k) point[k] = x[k];
+    // Candidates within the largest support; each particle then against its own.
+    bins.forEachCandidate(point, maxSupport_, [&](std::size_t j) {
+        double r2 = 0.0;
+        for (int k = 0; k < dim_; ++k) r2 += (position_[j][k] - x[k]) * (position_[j][k] - x[k]);
+        const double r = std::sqrt(r2);
+        if (r >= kernel_->supportRadius(h_[j])) return;
+        const double w = volume_[j] * kernel_->W(r, h_[j], dim_);
+        if (w <= 0.0) return;
+        s.particles.push_back(j);
+        s.weights.push_back(w);
+    });
 }
 
 Interpolation::Stencil Interpolation::stencil(const SamplePoint& point) const {
     Stencil s;
-    if (cells_.empty()) return s;
     SamplePoint x{0.0, 0.0, 0.0};
     for (int c = 0; c < dim_; ++c) x[c] = point[c];
-    const auto centre = cellOf(x);
-    for (int c = 0; c < dim_; ++c)
-        if (centre[c] < -2 || centre[c] > cellLimit) return s;  // beyond every particle's support
-
-    const int reach[3] = {1, dim_ > 1 ? 1 : 0, dim_ > 2 ? 1 : 0};
-    for (int a = -reach[0]; a <= reach[0]; ++a)
-        for (int b = -reach[1]; b <= reach[1]; ++b)
-            for (int c = -reach[2]; c <= reach[2]; ++c) {
-                auto it = cells_.find(key({centre[0] + a, centre[1] + b, centre[2] + c}));
-                if (it == cells_.end()) continue;
-                for (std::size_t j : it->second) {
-                    double r2 = 0.0;
-                    for (int k = 0; k < dim_; ++k) r2 += (position_[j][k] - x[k]) * (position_[j][k] - x[k]);
-                    const double r = std::sqrt(r2);
-                    if (r >= kernel_->supportRadius(h_[j])) continue;
-                    const double w = volume_[j] * kernel_->W(r, h_[j], dim_);
-                    if (w <= 0.0) continue;
-                    s.particles.push_back(j);
-                    s.weights.push_back(w);
-                }
-            }
+    if (dim_ == 1)
+        gather(bins1_, x, s);
+    else if (dim_ == 2)
+        gather(bins2_, x, s);
+    else
+        gather(bins3_, x, s);
     if (s.particles.empty()) return s;
 
     double sum = 0.0;

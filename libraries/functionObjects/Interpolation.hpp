@@ -16,6 +16,7 @@
 #include "core/Dictionary.hpp"
 #include "core/Tensor.hpp"
 #include "kernels/Kernel.hpp"
+#include "particles/CellBins.hpp"
 #include "particles/FieldStore.hpp"
 
 #include <array>
@@ -23,7 +24,6 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <unordered_map>
 #include <vector>
 
 namespace mfdyn {
@@ -81,9 +81,9 @@ public:
     static std::string methodName(Method method);
 
 private:
-    using CellKey = std::int64_t;
-    CellKey key(const std::array<std::int64_t, 3>& cell) const;
-    std::array<std::int64_t, 3> cellOf(const SamplePoint& x) const;
+    // The particles whose support holds x, with their weights w_j = V_j W(|x - x_j|, h_j).
+    template <int Dim>
+    void gather(const CellBins<Dim>& bins, const SamplePoint& x, Stencil& s) const;
 
     const FieldStore& particles_;
     int dim_;
@@ -95,10 +95,11 @@ private:
     std::vector<double> h_;              // per particle
     std::vector<double> volume_;         // per particle
     double maxSupport_ = 0.0;
-    // Cell binning of the particles with cells one largest support radius wide, so that a
-    // point's neighbours lie in its own and the adjacent cells.
-    SamplePoint origin_{};
-    std::unordered_map<CellKey, std::vector<std::size_t>> cells_;
+    // The particles binned in cells (the one of dim_ is used), queried within the largest
+    // support radius of each sample point.
+    CellBins<1> bins1_;
+    CellBins<2> bins2_;
+    CellBins<3> bins3_;
 };
 
 }  // namespace mfdyn
