@@ -1,7 +1,7 @@
 #include "boundaryConditions/Selection.hpp"
 
 #include <algorithm>
-#include <unordered_map>
+#include <unordered_set>
 
 namespace mfdyn {
 
@@ -71,44 +71,56 @@ template <int Dim>
 Selection<Dim>::~Selection() = default;
 
 template <int Dim>
+bool Selection<Dim>::matches(const ParticleSet<Dim>& particles, std::size_t i) const {
+    if (all_) return true;
+    if (!regionIds_.empty() &&
+        std::find(regionIds_.begin(), regionIds_.end(), particles.region()[i]) == regionIds_.end())
+        return false;
+    return !shape_ || shape_->inside(particles.position()[i].data());
+}
+
+template <int Dim>
+void Selection<Dim>::record(const ParticleSet<Dim>& particles) {
+    newIdsFrom_ = particles.nextGlobalId();
+    topologyVersion_ = particles.topologyVersion();
+}
+
+template <int Dim>
 void Selection<Dim>::resolve(const ParticleSet<Dim>& particles) {
-    const std::size_t n = particles.size();
+    const std::size_t n = particles.ownedCount();
     indices_.clear();
-    if (all_) {
-        indices_.resize(n);
-        for (std::size_t i = 0; i < n; ++i) indices_[i] = i;
-    } else {
-        const auto& x = particles.position();
-        const auto* region = regionIds_.empty() ? nullptr : &particles.region();
-        for (std::size_t i = 0; i < n; ++i) {
-            if (region && std::find(regionIds_.begin(), regionIds_.end(), (*region)[i]) == regionIds_.end())
-                continue;
-            if (shape_ && !shape_->inside(x[i].data())) continue;
-            indices_.push_back(i);
-        }
-    }
+    for (std::size_t i = 0; i < n; ++i)
+        if (matches(particles, i)) indices_.push_back(i);
     const auto& ids = particles.globalId();
     globalIds_.resize(indices_.size());
     for (std::size_t k = 0; k < indices_.size(); ++k) globalIds_[k] = ids[indices_[k]];
+    record(particles);
 }
 
 template <int Dim>
 void Selection<Dim>::update(const ParticleSet<Dim>& particles) {
     if (all_ || reselect_) return resolve(particles);
-    // Same particles, new places: a map from globalId of the selected ones to their new index.
-    std::unordered_map<std::int64_t, bool> wanted;
-    wanted.reserve(globalIds_.size());
-    for (auto id : globalIds_) wanted.emplace(id, true);
+    // Same particles, new places: the selected ones found again by globalId.
+    std::unordered_set<std::int64_t> wanted(globalIds_.begin(), globalIds_.end());
     const auto& ids = particles.globalId();
     indices_.clear();
     std::vector<std::int64_t> kept;
-    for (std::size_t i = 0; i < ids.size(); ++i)
-        if (wanted.count(ids[i])) {
+    // Particles removed by the solver (eroded, left the domain) drop out of the selection; those
+    // appended since the last update, and only they, are judged by the criteria.
+    for (std::size_t i = 0, n = particles.ownedCount(); i < n; ++i)
+        if (wanted.count(ids[i]) || (ids[i] >= newIdsFrom_ && matches(particles, i))) {
             indices_.push_back(i);
             kept.push_back(ids[i]);
         }
-    // Particles removed by the solver (eroded, left the domain) drop out of the selection.
     globalIds_ = std::move(kept);
+    record(particles);
+}
+
+template <int Dim>
+bool Selection<Dim>::refresh(const ParticleSet<Dim>& particles) {
+    if (particles.topologyVersion() == topologyVersion_) return false;
+    update(particles);
+    return true;
 }
 
 template <int Dim>

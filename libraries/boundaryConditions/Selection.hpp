@@ -10,11 +10,15 @@
 // side test) passes allByDefault; one that freezes particles (fixed) does not, so a forgotten
 // `regions` is an error rather than a case in which nothing moves.
 //
-// The selection is resolved once, to an index list. Indices go stale when the solver reorders
-// particles (cell sorting) or changes their number; update() then
-//   - keeps the same particles, found again by globalId (default), or
+// The selection is resolved once, to an index list of owned particles (ghosts are never
+// selected). Indices go stale when the solver reorders particles (cell sorting) or changes
+// their number (ParticleSetBase::append/keep); update() then
+//   - keeps the same particles, found again by globalId (default): a removed particle drops
+//     out, a particle appended since the last update (a global id not issued then) is judged by
+//     the criteria (a new particle of region `inlet` joins `regions (inlet)`), or
 //   - with `reselect yes;`, evaluates the criteria again on the current positions, for an
 //     Updated-Lagrangian run whose boundary is a fixed region of space rather than fixed particles.
+// refresh() is update() only when the particles changed since (FieldStore::topologyVersion()).
 #include "core/Dictionary.hpp"
 #include "core/KeywordSchema.hpp"
 #include "geometry/Shape.hpp"
@@ -49,6 +53,9 @@ public:
 
     // Refresh after a reorder or a change in particle count (see the header comment).
     void update(const ParticleSet<Dim>& particles);
+    // update() if the particles' topologyVersion() differs from the one last resolved for;
+    // returns whether it did.
+    bool refresh(const ParticleSet<Dim>& particles);
     // Evaluate the criteria on the current state, whatever `reselect` says.
     void resolve(const ParticleSet<Dim>& particles);
 
@@ -64,6 +71,10 @@ private:
     std::string shapeType_;
     std::vector<std::size_t> indices_;
     std::vector<std::int64_t> globalIds_;  // of indices_, for update() by identity
+    std::int64_t newIdsFrom_ = 0;          // ids from this one on were not issued at the last update
+    std::uint64_t topologyVersion_ = 0;    // of the particles at the last update
+    bool matches(const ParticleSet<Dim>& particles, std::size_t i) const;
+    void record(const ParticleSet<Dim>& particles);
 };
 
 extern template class Selection<1>;

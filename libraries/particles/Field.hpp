@@ -79,6 +79,16 @@ public:
         parallelFor(order.size(), [&](std::size_t i) { sorted[i] = values[order[i]]; });
         values.swap(sorted);
     }
+    void reserve(std::size_t n) override { values.reserve(n); }
+    // Ascending indices (checked by FieldStore::keep): element k moves down to k <= indices[k],
+    // so one forward pass compacts in place; resize() to a smaller size keeps the capacity.
+    void keep(const std::vector<std::size_t>& indices) override {
+        for (std::size_t k = 0; k < indices.size(); ++k) values[k] = values[indices[k]];
+        values.resize(indices.size());
+    }
+    void copyElements(const std::vector<std::size_t>& source, std::size_t first) override {
+        for (std::size_t k = 0; k < source.size(); ++k) values[first + k] = values[source[k]];
+    }
 
 private:
     // New particles start at zero, not at Eigen's uninitialised value.

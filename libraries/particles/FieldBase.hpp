@@ -52,6 +52,12 @@ public:
     virtual std::unique_ptr<FieldBase> clone() const = 0;
     // New order: element i becomes old element order[i] (cell sorting of the neighbour search).
     virtual void reorder(const std::vector<std::size_t>& order) = 0;
+    virtual void reserve(std::size_t n) = 0;
+    // Keep only the elements at `indices` (strictly ascending, checked by the caller), in that
+    // order, compacted in place.
+    virtual void keep(const std::vector<std::size_t>& indices) = 0;
+    // Element first + k becomes a copy of element source[k] (ghosts from their sources).
+    virtual void copyElements(const std::vector<std::size_t>& source, std::size_t first) = 0;
 
     // Component c of particle i as a double, for generic read-only code.
     double component(std::size_t i, int c) const {

@@ -15,6 +15,7 @@ FieldStore::FieldStore(int dimension, std::size_t size) : dimension_(dimension),
 FieldStore::FieldStore(const FieldStore& other)
     : dimension_(other.dimension_),
       size_(other.size_),
+      topologyVersion_(other.topologyVersion_),
       source_(other.source_),
       sourceFields_(other.sourceFields_) {
     for (const auto& f : other.fields_) fields_.push_back(f->clone());
@@ -33,6 +34,32 @@ FieldStore::~FieldStore() = default;
 void FieldStore::resize(std::size_t n) {
     for (auto& f : fields_) f->resize(n);
     size_ = n;
+    ++topologyVersion_;
+}
+
+std::size_t FieldStore::append(std::size_t n) {
+    const std::size_t first = size_;
+    FieldStore::resize(size_ + n);
+    return first;
+}
+
+void FieldStore::keep(const std::vector<std::size_t>& indices) {
+    // Checked before anything moves: a bad list must not leave the fields half compacted.
+    for (std::size_t k = 0; k < indices.size(); ++k) {
+        if (indices[k] >= size_)
+            throw Error("keep: index " + std::to_string(indices[k]) + " of a set of " +
+                        std::to_string(size_) + " particles");
+        if (k > 0 && indices[k] <= indices[k - 1])
+            throw Error("keep: indices must be strictly ascending (" + std::to_string(indices[k - 1]) +
+                        " then " + std::to_string(indices[k]) + " at position " + std::to_string(k) + ")");
+    }
+    for (auto& f : fields_) f->keep(indices);
+    size_ = indices.size();
+    ++topologyVersion_;
+}
+
+void FieldStore::reserve(std::size_t n) {
+    for (auto& f : fields_) f->reserve(n);
 }
 
 FieldBase* FieldStore::findField(const std::string& name) const {
@@ -99,6 +126,7 @@ void FieldStore::reorder(const std::vector<std::size_t>& order) {
         throw Error("reorder: permutation of " + std::to_string(order.size()) + " for " +
                     std::to_string(size_) + " particles");
     for (auto& f : fields_) f->reorder(order);
+    ++topologyVersion_;
 }
 
 void FieldStore::checkDimension(const std::string& name, int typeDim, const std::string& typeName) const {

@@ -6,6 +6,7 @@
 #include "core/Error.hpp"
 #include "particles/Field.hpp"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -23,7 +24,22 @@ public:
 
     int dimension() const { return dimension_; }
     std::size_t size() const { return size_; }
-    void resize(std::size_t n);
+    virtual void resize(std::size_t n);
+
+    // Particles that come and go (issue 15). Each is O(N) over all fields and, within the
+    // capacity reserve() made, allocates nothing.
+    //   append(n): n new particles at the end, every field extended with zero (a field created
+    //              later is zero-filled too); returns the index of the first new one.
+    //   keep(indices): every particle not in `indices` (strictly ascending, all < size())
+    //              removed, the others kept in their order, every field compacted in place.
+    // ParticleSetBase overrides both to issue and retire global ids.
+    virtual std::size_t append(std::size_t n);
+    virtual void keep(const std::vector<std::size_t>& indices);
+    void reserve(std::size_t n);
+    // Changes whenever particles are appended, removed, reordered or resized: index lists made
+    // earlier (a Verlet list, a selection) compare it with the value they were made for
+    // (VerletList::track, Selection::refresh) to know they must be rebuilt.
+    std::uint64_t topologyVersion() const { return topologyVersion_; }
 
     // The field `name` of element type T, created (zero-filled) on first request. `kind` only
     // matters for a 1D tensor, whose C++ type is that of a 1D vector. Throws Error when `name`
@@ -53,7 +69,7 @@ public:
     // Table of name, kind, components and bytes per particle, for the log.
     std::string fieldSummary() const;
     // Apply one permutation to every field (see FieldBase::reorder).
-    void reorder(const std::vector<std::size_t>& order);
+    virtual void reorder(const std::vector<std::size_t>& order);
 
     // The particle file the fields there are now were read from (the reader sets it). A field
     // of the file asked for with another type is then the file's fault, not the code's: an
@@ -72,6 +88,7 @@ private:
 
     int dimension_;
     std::size_t size_;
+    std::uint64_t topologyVersion_ = 0;
     std::vector<std::unique_ptr<FieldBase>> fields_;
     std::string source_;                     // see setSource()
     std::vector<std::string> sourceFields_;  // the fields read from source_

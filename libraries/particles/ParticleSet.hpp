@@ -54,6 +54,55 @@ public:
     using ParticleSetBase::addField;
     FieldBase& addField(const std::string& name, FieldKind kind) override;
     std::unique_ptr<ParticleSetBase> clone() const override { return std::make_unique<ParticleSet>(*this); }
+
+    // Ghosts (see ParticleSetBase): ghost g is the image of owned particle source[g] under the
+    // orthogonal map[g] (a reflection R = I - 2 n n^T, or a product of them at a corner). Every
+    // field is copied from the source; the caller then sets what the image changes: its
+    // position (a mirror image is affine, not Q x), its velocity (the boundary's condition), and
+    // the vectors and tensors that reflect (reflectToGhosts). Returns the first ghost's index.
+    std::size_t addGhosts(const std::vector<std::size_t>& source, const std::vector<TensorType>& map) {
+        if (map.size() != source.size())
+            throw Error("addGhosts: " + std::to_string(map.size()) + " maps for " +
+                        std::to_string(source.size()) + " ghosts");
+        const std::size_t first = appendGhostCopies(source);
+        ghostMap_.insert(ghostMap_.end(), map.begin(), map.end());
+        return first;
+    }
+    const std::vector<TensorType>& ghostMap() const { return ghostMap_; }
+    void clearGhosts() override {
+        ghostMap_.clear();
+        ParticleSetBase::clearGhosts();
+    }
+    // After the owned values of `field` changed: each ghost's value copied again from its source.
+    template <class T>
+    void copyToGhosts(std::vector<T>& field) const {
+        const std::size_t owned = ownedCount();
+        const auto& source = ghostSource();
+        for (std::size_t g = 0; g < source.size(); ++g) field[owned + g] = field[source[g]];
+    }
+    // Each ghost's value the image of its source's: Q a for a vector, Q T Q^T for a tensor.
+    // (Two names: in 1D a vector and a tensor are the same C++ type.)
+    void reflectVectorsToGhosts(std::vector<VectorType>& field) const {
+        const std::size_t owned = ownedCount();
+        const auto& source = ghostSource();
+        for (std::size_t g = 0; g < source.size(); ++g) field[owned + g] = ghostMap_[g] * field[source[g]];
+    }
+    void reflectTensorsToGhosts(std::vector<TensorType>& field) const {
+        const std::size_t owned = ownedCount();
+        const auto& source = ghostSource();
+        for (std::size_t g = 0; g < source.size(); ++g)
+            field[owned + g] = ghostMap_[g] * field[source[g]] * ghostMap_[g].transpose();
+    }
+    void reflectTensorsToGhosts(std::vector<SymmTensorType>& field) const {
+        const std::size_t owned = ownedCount();
+        const auto& source = ghostSource();
+        for (std::size_t g = 0; g < source.size(); ++g)
+            field[owned + g] =
+                SymmTensorType::fromFull(ghostMap_[g] * field[source[g]].full() * ghostMap_[g].transpose());
+    }
+
+private:
+    std::vector<TensorType> ghostMap_;
 };
 
 extern template class ParticleSet<1>;

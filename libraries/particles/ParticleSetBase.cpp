@@ -1,5 +1,7 @@
 #include "particles/ParticleSetBase.hpp"
 
+#include <algorithm>
+
 namespace mfdyn {
 
 ParticleSetBase::~ParticleSetBase() = default;
@@ -13,6 +15,75 @@ std::vector<std::size_t> ParticleSetBase::regionCounts() const {
         ++counts[std::size_t(r)];
     }
     return counts;
+}
+
+void ParticleSetBase::refuseWithGhosts(const char* operation) const {
+    if (!ghostSource_.empty())
+        throw Error(std::string(operation) + ": the particle set holds " +
+                    std::to_string(ghostSource_.size()) + " ghosts; clear them first (clearGhosts())");
+}
+
+std::int64_t ParticleSetBase::nextGlobalId() const {
+    const auto& id = requireField<std::int64_t>("globalId");
+    std::int64_t next = nextIdFloor_;
+    for (std::size_t i = 0, n = ownedCount(); i < n; ++i) next = std::max(next, id[i] + 1);
+    return next;
+}
+
+void ParticleSetBase::reserveGlobalIdsBelow(std::int64_t next) {
+    nextIdFloor_ = std::max(nextIdFloor_, next);
+}
+
+std::size_t ParticleSetBase::append(std::size_t n) {
+    refuseWithGhosts("append");
+    const std::int64_t next = nextGlobalId();
+    const std::size_t first = FieldStore::append(n);
+    auto& id = requireField<std::int64_t>("globalId");
+    for (std::size_t k = 0; k < n; ++k) id[first + k] = next + std::int64_t(k);
+    nextIdFloor_ = next + std::int64_t(n);
+    return first;
+}
+
+void ParticleSetBase::keep(const std::vector<std::size_t>& indices) {
+    refuseWithGhosts("keep");
+    // Remember the removed particles' ids as issued: the highest may be among them.
+    const std::int64_t next = nextGlobalId();
+    FieldStore::keep(indices);
+    nextIdFloor_ = next;
+}
+
+void ParticleSetBase::resize(std::size_t n) {
+    // A resize that drops particles loses their ids too: keep the next id above them. (The sph
+    // solver's own ghosts, made by resize before the owned/ghost range existed, are copies of
+    // real ids and leave it unchanged.)
+    if (n < size()) nextIdFloor_ = nextGlobalId();
+    refuseWithGhosts("resize");
+    FieldStore::resize(n);
+}
+
+void ParticleSetBase::reorder(const std::vector<std::size_t>& order) {
+    refuseWithGhosts("reorder");
+    FieldStore::reorder(order);
+}
+
+void ParticleSetBase::clearGhosts() {
+    if (ghostSource_.empty()) return;
+    const std::size_t owned = ownedCount();
+    ghostSource_.clear();
+    FieldStore::resize(owned);
+}
+
+std::size_t ParticleSetBase::appendGhostCopies(const std::vector<std::size_t>& source) {
+    const std::size_t owned = ownedCount();
+    for (std::size_t s : source)
+        if (s >= owned)
+            throw Error("ghost source " + std::to_string(s) + " is not an owned particle (there are " +
+                        std::to_string(owned) + ")");
+    const std::size_t first = size();
+    FieldStore::resize(first + source.size());
+    for (const auto& f : fields()) f->copyElements(source, first);
+    ghostSource_.insert(ghostSource_.end(), source.begin(), source.end());
+    return first;
 }
 
 }  // namespace mfdyn

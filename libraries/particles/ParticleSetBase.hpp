@@ -5,6 +5,7 @@
 // works on this; solvers dispatch once to ParticleSet<Dim> with withDimension().
 #include "particles/FieldStore.hpp"
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -28,9 +29,53 @@ public:
     // Particles per region id (ids beyond regionNames are counted too).
     std::vector<std::size_t> regionCounts() const;
 
+    // --- Particles that come and go -------------------------------------------------------
+    // append(n) issues the new particles the ids nextGlobalId() .. + n - 1 (region 0, every
+    // other field zero); keep() retires the ids of the particles it removes. An id is never
+    // issued twice in a run, nor after a restart: nextGlobalId() is above every id this set has
+    // held, and the particle file carries it (FieldData nextGlobalId, written when it is more
+    // than the largest id + 1, i.e. after the particle of the highest id was removed).
+    // Both refuse while ghosts are there (clear them first: ghosts are remade each step).
+    //
+    // MPI (not built yet): each rank holds its own set; the ranks agree on the next id by a
+    // global max of nextGlobalId() after each topology change, and a rank appending k
+    // particles takes the block [next + offset, next + offset + k) with offset the exclusive
+    // prefix sum of the ranks' k, so blocks are disjoint and no id is reused.
+    std::size_t append(std::size_t n) override;
+    void keep(const std::vector<std::size_t>& indices) override;
+    void resize(std::size_t n) override;
+    void reorder(const std::vector<std::size_t>& order) override;
+    // Above every id issued, held or read so far.
+    std::int64_t nextGlobalId() const;
+    // Raise the next id to at least `next` (the reader, from the file's nextGlobalId).
+    void reserveGlobalIdsBelow(std::int64_t next);
+
+    // --- Owned particles and ghosts -------------------------------------------------------
+    // The set holds its owned particles [0, ownedCount()) followed by ghosts
+    // [ownedCount(), size()): read-only images of owned particles (mirror planes today, other
+    // ranks' particles under MPI), remade each step, never integrated or written. Ghost g
+    // (index ownedCount() + g) is the image of owned particle ghostSource()[g]; the orthogonal
+    // map from source to ghost is ParticleSet<Dim>::ghostMap()[g]. Without ghosts
+    // ownedCount() == size().
+    std::size_t ownedCount() const { return size() - ghostSource_.size(); }
+    std::size_t ghostCount() const { return ghostSource_.size(); }
+    const std::vector<std::size_t>& ghostSource() const { return ghostSource_; }
+    // Drop every ghost (the fields shrink back to the owned particles).
+    virtual void clearGhosts();
+
 protected:
+    // Append ghosts of `source` (owned indices), every field copied from its source (globalId
+    // too: a ghost is its source seen elsewhere); returns the first ghost's index.
+    std::size_t appendGhostCopies(const std::vector<std::size_t>& source);
+
     ParticleSetBase(int dimension, std::size_t size) : FieldStore(dimension, size) {}
     ParticleSetBase(const ParticleSetBase&) = default;
+
+private:
+    void refuseWithGhosts(const char* operation) const;
+
+    std::int64_t nextIdFloor_ = 0;          // the next id is at least this (see nextGlobalId())
+    std::vector<std::size_t> ghostSource_;  // per ghost, its owned source
 };
 
 }  // namespace mfdyn

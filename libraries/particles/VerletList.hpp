@@ -23,6 +23,13 @@ public:
     bool update(const std::vector<Vector<Dim>>& positions, const std::vector<double>& supportRadius);
     bool update(const std::vector<Vector<Dim>>& positions, double supportRadius);
     void invalidate() { built_ = false; }
+    // Called with the particles' FieldStore::topologyVersion() before update(): after particles
+    // were appended, removed or reordered the stored positions belong to other particles (even
+    // when their number is the same), so the next update() rebuilds.
+    void track(std::uint64_t topologyVersion) {
+        if (topologyVersion != trackedVersion_) built_ = false;
+        trackedVersion_ = topologyVersion;
+    }
 
     const NeighbourList& candidates() const { return candidates_; }
     double skin() const { return skin_; }
@@ -43,6 +50,7 @@ private:
     std::size_t rebuilds_ = 0;
     std::vector<Vector<Dim>> builtPosition_;
     std::vector<double> builtRadius_;
+    std::uint64_t trackedVersion_ = 0;  // see track()
 };
 
 }  // namespace mfdyn

@@ -94,6 +94,7 @@ public:
         ParticleFile result;
         int dim = 0;
         std::vector<std::string> regionNames, materialNames;
+        std::int64_t nextGlobalId = 0;  // a floor only; the ids read raise it (ParticleSetBase)
         if (const XmlElement* fieldData = polyData.findChild("FieldData")) {
             for (const XmlElement* e : fieldData->childrenNamed("DataArray")) {
                 const std::string name = attribute(*e, "Name");
@@ -107,6 +108,13 @@ public:
                     result.time = singleValue(*e);
                     if (!std::isfinite(result.time)) fail("time is " + formatNumber(result.time));
                     result.hasTime = true;
+                } else if (name == "nextGlobalId") {
+                    // Checked as a double (as mfdynDimension); ids up to 2^53 are exact.
+                    const double value = singleValue(*e);
+                    if (!(value >= 0 && value <= 9007199254740992.0 && value == std::floor(value)))
+                        fail("nextGlobalId is " + formatNumber(value) +
+                             ", not a whole number from 0 to 2^53");
+                    nextGlobalId = std::int64_t(value);
                 } else if (name == "regionNames")
                     regionNames = strings(*e);
                 else if (name == "materialNames")
@@ -161,6 +169,7 @@ public:
         });
         result.particles->regionNames = std::move(regionNames);
         result.particles->materialNames = std::move(materialNames);
+        result.particles->reserveGlobalIdsBelow(nextGlobalId);
         // Fields read here that a model then asks for with another type are the file's fault:
         // the clash is reported as an InputError naming this file.
         result.particles->setSource(file_.string());

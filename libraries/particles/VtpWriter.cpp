@@ -200,12 +200,23 @@ Block valueBlock(const std::string& type, const std::string& name, T value) {
 }  // namespace
 
 void writeVtp(const std::filesystem::path& file, const ParticleSetBase& particles, double time) {
-    const std::size_t n = particles.size();
+    // Owned particles only: ghosts are remade from them each step (ParticleSetBase).
+    const std::size_t n = particles.ownedCount();
     const FieldBase& position = particles.field("position");
 
     std::vector<Block> blocks;
     blocks.push_back(valueBlock<std::int32_t>("Int32", "mfdynDimension", particles.dimension()));
     blocks.push_back(valueBlock<double>("Float64", "time", time));
+    // The next global id, only when the ids alone do not imply it (the particle of the highest
+    // id was removed): a run restarted from this file then still never reuses an id. Files of
+    // runs that remove nothing are unchanged.
+    {
+        const auto& id = particles.requireField<std::int64_t>("globalId");
+        std::int64_t implied = 0;
+        for (std::size_t i = 0; i < n; ++i) implied = std::max(implied, id[i] + 1);
+        const std::int64_t next = particles.nextGlobalId();
+        if (next > implied) blocks.push_back(valueBlock<std::int64_t>("Int64", "nextGlobalId", next));
+    }
     if (!particles.regionNames.empty()) blocks.push_back(stringsBlock("regionNames", particles.regionNames));
     if (!particles.materialNames.empty())
         blocks.push_back(stringsBlock("materialNames", particles.materialNames));

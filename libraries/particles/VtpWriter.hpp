@@ -7,7 +7,9 @@
 //     <PolyData>
 //       <FieldData>   mfdynDimension (Int32, 1 tuple), time (Float64, 1 tuple), and, when not
 //                     empty, regionNames and materialNames (type="String": one tuple per name,
-//                     stored as the names each followed by a NUL byte, index = id)
+//                     stored as the names each followed by a NUL byte, index = id), and
+//                     nextGlobalId (Int64) when it is above the largest globalId + 1
+//                     (ParticleSetBase::nextGlobalId: ids are never reused after a restart)
 //       <Piece NumberOfPoints="n" NumberOfVerts="n" ...>
 //         <PointData> one DataArray per field except position: Float64 or Int64 (integer
 //                     fields), NumberOfComponents 1 (scalar, integer), 3 (vector), 9 (tensor,
