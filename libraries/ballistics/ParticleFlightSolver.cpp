@@ -16,25 +16,18 @@
 
 namespace mfdyn {
 
-namespace {
-template <int Dim>
-std::unique_ptr<ParticleSet<Dim>> adopt(std::unique_ptr<ParticleSetBase> base) {
-    particleSetCast<Dim>(*base);  // checks the dimension
-    return std::unique_ptr<ParticleSet<Dim>>(static_cast<ParticleSet<Dim>*>(base.release()));
-}
-}  // namespace
-
 template <int Dim>
 ParticleFlightSolver<Dim>::ParticleFlightSolver(SolverRun& run)
     : Solver(run),
-      particlesOwner_(adopt<Dim>(run.takeParticles())),
+      particlesOwner_(adoptParticleSet<Dim>(run.takeParticles())),
       particles_(particlesOwner_.get()),
-      properties_(run.runCase().readConstant("particleFlightProperties")),
+      properties_(openConstant("particleFlightProperties")),
       bodyForce_(BodyForce::New(properties_.subDict("bodyForce"), Dim)),
       lengthScale_(properties_.get<double>("lengthScale")),
       x_(particles_->position()),
       v_(particles_->vectorField("velocity")),
       a_(particles_->vectorField("acceleration")) {
+    declarePhases({"kickDrift", "bodyForce"});
     if (!(lengthScale_ > 0)) throw properties_.error("lengthScale", "lengthScale must be positive");
     particles_->scalarField("mass");
     computeAcceleration(run.time().value());
@@ -42,9 +35,8 @@ ParticleFlightSolver<Dim>::ParticleFlightSolver(SolverRun& run)
 
 template <int Dim>
 void ParticleFlightSolver<Dim>::computeAcceleration(double t) {
-    Stopwatch watch;
+    auto timed = phase("bodyForce");
     parallelFor(x_.size(), [&](std::size_t i) { bodyForce_->acceleration(x_[i].data(), t, a_[i].data()); });
-    forceSeconds_ += watch.seconds();
 }
 
 template <int Dim>
@@ -58,33 +50,31 @@ TimeStepVote ParticleFlightSolver<Dim>::stableTimeStep() {
 
 template <int Dim>
 void ParticleFlightSolver<Dim>::step(double dt) {
-    Stopwatch watch;
     const double t = time().value();
-    parallelFor(x_.size(), [&](std::size_t i) {
-        v_[i] += 0.5 * dt * a_[i];
-        x_[i] += dt * v_[i];
-    });
-    kickDriftSeconds_ += watch.seconds();
+    {
+        auto timed = phase("kickDrift");
+        parallelFor(x_.size(), [&](std::size_t i) {
+            v_[i] += 0.5 * dt * a_[i];
+            x_[i] += dt * v_[i];
+        });
+    }
     computeAcceleration(t + dt);
-    watch.restart();
-    parallelFor(x_.size(), [&](std::size_t i) { v_[i] += 0.5 * dt * a_[i]; });
-    kickDriftSeconds_ += watch.seconds();
-    checkFinite(t + dt);
+    {
+        auto timed = phase("kickDrift");
+        parallelFor(x_.size(), [&](std::size_t i) { v_[i] += 0.5 * dt * a_[i]; });
+    }
+    checkFinite();
 }
 
 template <int Dim>
-void ParticleFlightSolver<Dim>::checkFinite(double t) const {
-    const double bad = Reduce::sum<double>(
-        x_.size(), [&](std::size_t i) { return (x_[i].allFinite() && v_[i].allFinite()) ? 0.0 : 1.0; });
-    if (bad == 0) return;
-    for (std::size_t i = 0; i < x_.size(); ++i) {
-        if (x_[i].allFinite() && v_[i].allFinite()) continue;
-        throw RunError("phase integrate, step " + std::to_string(time().timeIndex() + 1) +
-                       ", t = " + std::to_string(t) + ": particle " +
-                       std::to_string(particles_->globalId()[i]) + " (region " +
-                       std::to_string(particles_->region()[i]) + ") has a non-finite position or velocity; " +
-                       std::to_string(std::int64_t(bad)) + " particles affected");
-    }
+void ParticleFlightSolver<Dim>::checkFinite() const {
+    checkState(
+        "integrate", x_.size(), [&](std::size_t i) { return !x_[i].allFinite() || !v_[i].allFinite(); },
+        [&](std::size_t i, double count) {
+            return "particle " + std::to_string(particles_->globalId()[i]) + " (region " +
+                   std::to_string(particles_->region()[i]) + ") has a non-finite position or velocity; " +
+                   std::to_string(std::int64_t(count)) + " particles affected";
+        });
 }
 
 template <int Dim>
@@ -92,11 +82,6 @@ std::optional<double> ParticleFlightSolver<Dim>::potentialEnergy() const {
     const auto& m = particles_->template requireField<double>("mass");
     return Reduce::sum<double>(x_.size(),
                                [&](std::size_t i) { return m[i] * bodyForce_->potential(x_[i].data()); });
-}
-
-template <int Dim>
-std::vector<std::pair<std::string, double>> ParticleFlightSolver<Dim>::phaseTimes() const {
-    return {{"kickDrift", kickDriftSeconds_}, {"bodyForce", forceSeconds_}};
 }
 
 template class ParticleFlightSolver<1>;

@@ -30,23 +30,20 @@ public:
     void step(double dt) override;
     ParticleSetBase& particles() override { return *particles_; }
     std::optional<double> potentialEnergy() const override;
-    std::vector<const Dictionary*> dictionaries() const override { return {&properties_}; }
-    std::vector<std::pair<std::string, double>> phaseTimes() const override;
     const BodyForce& bodyForce() const override { return *bodyForce_; }
 
 private:
     void computeAcceleration(double t);
-    void checkFinite(double t) const;
+    void checkFinite() const;
 
     std::unique_ptr<ParticleSet<Dim>> particlesOwner_;
     ParticleSet<Dim>* particles_;
-    Dictionary properties_;
+    const Dictionary& properties_;
     std::unique_ptr<BodyForce> bodyForce_;
     double lengthScale_;
     std::vector<Vector<Dim>>& x_;
     std::vector<Vector<Dim>>& v_;
     std::vector<Vector<Dim>>& a_;
-    double kickDriftSeconds_ = 0, forceSeconds_ = 0;
 };
 
 extern template class ParticleFlightSolver<1>;

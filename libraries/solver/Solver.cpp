@@ -1,6 +1,9 @@
 #include "solver/Solver.hpp"
 
+#include "boundaryConditions/BoundaryConditionList.hpp"
 #include "solver/SolverRun.hpp"
+
+#include <filesystem>
 
 namespace mfdyn {
 
@@ -15,6 +18,57 @@ const Time& Solver::time() const {
 }
 const std::string& Solver::startTimeName() const {
     return run_.startTimeName();
+}
+
+std::vector<const Dictionary*> Solver::dictionaries() const {
+    std::vector<const Dictionary*> d;
+    for (const Dictionary& dict : opened_) d.push_back(&dict);
+    return d;
+}
+
+const Dictionary& Solver::openConstant(const std::string& name) {
+    return opened_.emplace_back(run_.runCase().readConstant(name));
+}
+
+const Dictionary* Solver::openOptionalConstant(const std::string& name) {
+    if (!std::filesystem::exists(run_.runCase().constantFile(name))) return nullptr;
+    return &openConstant(name);
+}
+
+template <int Dim>
+BoundaryConditionList<Dim> Solver::readBoundaryConditions(const ParticleSet<Dim>& particles) {
+    const Dictionary* dict = openOptionalConstant("boundaryConditions");
+    if (!dict) return {};
+    BoundaryConditionList<Dim> list(*dict, particles);
+    Log::info("Boundary conditions:\n" + list.summary());
+    return list;
+}
+
+template BoundaryConditionList<1> Solver::readBoundaryConditions(const ParticleSet<1>&);
+template BoundaryConditionList<2> Solver::readBoundaryConditions(const ParticleSet<2>&);
+template BoundaryConditionList<3> Solver::readBoundaryConditions(const ParticleSet<3>&);
+
+void Solver::checkPositiveMassAndDensity(const ParticleSetBase& particles, const std::vector<double>& mass,
+                                         const std::vector<double>& density) {
+    const auto& id = particles.requireField<std::int64_t>("globalId");
+    for (std::size_t i = 0; i < mass.size(); ++i)
+        if (!(mass[i] > 0) || !(density[i] > 0))
+            throw InputError("particle " + std::to_string(id[i]) + " has mass " + std::to_string(mass[i]) +
+                             " and density " + std::to_string(density[i]) + ": both must be positive");
+}
+
+std::size_t Solver::phaseIndex(std::string_view name) {
+    for (std::size_t k = 0; k < phases_.size(); ++k)
+        if (phases_[k].first == name) return k;
+    phases_.emplace_back(std::string(name), 0.0);
+    return phases_.size() - 1;
+}
+
+std::string Solver::statePrefix(std::string_view phaseName) const {
+    std::ostringstream s;
+    s.precision(6);
+    s << "phase " << phaseName << ", step " << time().timeIndex() + 1 << ", t = " << time().value() << ": ";
+    return s.str();
 }
 
 }  // namespace mfdyn

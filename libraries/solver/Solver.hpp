@@ -6,25 +6,47 @@
 //     void step(double dt)            advance the state by dt (the method's named phases)
 //
 // The loop itself (SolverRun::run) is shared: time control, writes and restart, function
-// objects, signals, progress and the summary are the same for every method.
+// objects, signals, progress and the summary are the same for every method. So is the set-up a
+// method needs, here, so that a new method writes only its physics:
+//
+//     openConstant / openOptionalConstant   dictionaries recorded for the never-read check
+//     readBoundaryConditions                constant/boundaryConditions, if the case has one
+//     checkPositiveMassAndDensity           the start state's masses and densities
+//     phase("name")                         a scoped timer feeding the summary's phase lines
+//     checkState(phase, n, bad, describe)   a state check every rank agrees on
+//     preStep(), extraOutput()              hooks: topology changes, and files beside particles.vtp
+//
+// tests/unit/solver/DriftSolverTest.cpp is a whole method on these in under 150 lines.
 #include "core/Dictionary.hpp"
+#include "core/Error.hpp"
+#include "core/Log.hpp"
 #include "core/Time.hpp"
 #include "functionObjects/RunContext.hpp"
 #include "particles/ParticleSet.hpp"
+#include "particles/TimeDirectory.hpp"
 
+#include <cstdint>
+#include <deque>
+#include <sstream>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 namespace mfdyn {
 
 class SolverRun;
+template <int Dim>
+class BoundaryConditionList;
 
 class Solver : public RunContext {
 public:
     explicit Solver(SolverRun& run);
     ~Solver() override;
 
+    // Topology changes before the step's time-step vote (particles added or removed, MPM's
+    // relocation to the grid): called by the loop at the start of every step.
+    virtual void preStep() {}
     virtual TimeStepVote stableTimeStep() = 0;
     virtual void step(double dt) = 0;
 
@@ -34,10 +56,14 @@ public:
     // Extra entries for <time>/state beyond the time counters, and their restore.
     virtual std::string solverState() const { return {}; }
     virtual void restoreSolverState(const Dictionary&) {}
-    // The dictionaries this solver read, for the never-read-entry check at the end of set-up.
-    virtual std::vector<const Dictionary*> dictionaries() const { return {}; }
-    // Seconds spent in each named phase, for the summary.
-    virtual std::vector<std::pair<std::string, double>> phaseTimes() const { return {}; }
+    // Files written into each time directory beside particles.vtp, in the same atomic write
+    // (a background grid's fields); `state` is the loop's own name.
+    virtual std::vector<ExtraFile> extraOutput() const { return {}; }
+    // The dictionaries this solver read, for the never-read-entry check at the end of set-up:
+    // by default every one opened through openConstant/openOptionalConstant, in that order.
+    virtual std::vector<const Dictionary*> dictionaries() const;
+    // Seconds spent in each named phase, for the summary: by default those timed by phase().
+    virtual std::vector<std::pair<std::string, double>> phaseTimes() const { return phases_; }
     // Extra lines for the summary (pair interactions per second, ...), given the time-loop seconds.
     virtual std::vector<std::string> summary(double /*loopSeconds*/) const { return {}; }
 
@@ -46,7 +72,87 @@ public:
     const std::string& startTimeName() const override;
 
 protected:
+    // constant/<name>, read once and kept for the solver's lifetime (the reference stays valid),
+    // recorded for the never-read check.
+    const Dictionary& openConstant(const std::string& name);
+    // The same for a dictionary a case may leave out: null when constant/<name> does not exist.
+    const Dictionary* openOptionalConstant(const std::string& name);
+
+    // constant/boundaryConditions when the case has one (its conditions logged), else an empty
+    // list. The selections are made from `particles` as they are now.
+    template <int Dim>
+    BoundaryConditionList<Dim> readBoundaryConditions(const ParticleSet<Dim>& particles);
+
+    // Every particle's mass and density positive (and not NaN); else an InputError naming the
+    // first particle that is not.
+    static void checkPositiveMassAndDensity(const ParticleSetBase& particles, const std::vector<double>& mass,
+                                            const std::vector<double>& density);
+
+    // Named phase timing: `auto timed = phase("computeRates");` adds the seconds until `timed`
+    // goes out of scope to that phase. Phases appear in the summary in the order declared, then
+    // in the order first timed.
+    class ScopedPhase {
+    public:
+        ScopedPhase(Solver& solver, std::size_t index) : solver_(solver), index_(index) {}
+        ScopedPhase(const ScopedPhase&) = delete;
+        ScopedPhase& operator=(const ScopedPhase&) = delete;
+        ~ScopedPhase() { stop(); }
+        // A pause for work timed as another phase (the rates inside an integrator), and the resume.
+        void stop() {
+            if (running_) solver_.phases_[index_].second += watch_.seconds();
+            running_ = false;
+        }
+        void resume() {
+            watch_.restart();
+            running_ = true;
+        }
+
+    private:
+        Solver& solver_;
+        std::size_t index_;
+        Stopwatch watch_;
+        bool running_ = true;
+    };
+    [[nodiscard]] ScopedPhase phase(std::string_view name) { return ScopedPhase(*this, phaseIndex(name)); }
+    // The summary's order, independent of which phase happens to run first.
+    void declarePhases(std::initializer_list<std::string_view> names) {
+        for (auto name : names) phaseIndex(name);
+    }
+
+    // The state check every rank agrees on: the bad particles (bad(i) for i < n) are counted
+    // with a global sum, so that when any rank has one every rank throws (a throw only where the
+    // bad particle lives would leave the others waiting in their next collective). The message
+    // is "phase <phase>, step <k>, t = <t>: " + describe(i, count) for the first bad particle
+    // here, or a pointer to the ranks that have them.
+    template <class Bad, class Describe>
+    void checkState(std::string_view phaseName, std::size_t n, Bad&& bad, Describe&& describe) const {
+        const double count = globalCount(n, bad);
+        if (count == 0) return;
+        for (std::size_t i = 0; i < n; ++i)
+            if (bad(i)) throw RunError(statePrefix(phaseName) + describe(i, count));
+        throw RunError(statePrefix(phaseName) + std::to_string(std::int64_t(count)) +
+                       " particles on other processes have left the valid state (their messages say which)");
+    }
+
     SolverRun& run_;
+
+private:
+    std::size_t phaseIndex(std::string_view name);
+    std::string statePrefix(std::string_view phaseName) const;
+    // How many i < n have bad(i), summed over every process (the state check's one global
+    // reduction: every rank calls it, bad particles or not).
+    template <class Bad>
+    static double globalCount(std::size_t n, Bad& bad);
+
+    std::deque<Dictionary> opened_;  // a deque: references to its elements stay valid
+    std::vector<std::pair<std::string, double>> phases_;
 };
 
 }  // namespace mfdyn
+
+#include "core/Parallel.hpp"
+
+template <class Bad>
+double mfdyn::Solver::globalCount(std::size_t n, Bad& bad) {
+    return GlobalReduce::sum<double>(n, [&](std::size_t i) { return bad(i) ? 1.0 : 0.0; });
+}

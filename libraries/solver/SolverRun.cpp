@@ -152,7 +152,9 @@ void SolverRun::write(Solver& solver) {
     }
     std::string state = "// Restart state of " + application_ + " at time " + time.timeName() +
                         " (read by startFrom latestTime)\n" + time.state() + solver.solverState();
-    writeTimeDirectory(case_.root(), time.timeName(), solver.particles(), {{"state", state}}, time.value());
+    std::vector<ExtraFile> files{{"state", state}};
+    for (auto& file : solver.extraOutput()) files.push_back(std::move(file));
+    writeTimeDirectory(case_.root(), time.timeName(), solver.particles(), files, time.value());
     pvd_->add(time.value(), time.timeName() + "/" + particleFileName);
     pvd_->write();
     lastWritten_ = time.timeName();
@@ -271,6 +273,7 @@ int SolverRun::run(Solver& solver) {
     int stopSignal = 0;
     bool stoppedByControl = false;
     while (time.running()) {
+        solver.preStep();
         const TimeStepVote vote = solver.stableTimeStep();
         const double dt = time.chooseDeltaT(vote);
         try {

@@ -97,8 +97,8 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
     : Solver(run),
       owner_(adoptParticleSet<Dim>(run.takeParticles())),
       particles_(owner_.get()),
-      properties_(run.runCase().readConstant("sphProperties")),
-      materialProperties_(run.runCase().readConstant("materialProperties")),
+      properties_(openConstant("sphProperties")),
+      materialProperties_(openConstant("materialProperties")),
       kernel_(Kernel::New(properties_.subDict("kernel"))),
       W_(kernel_->template evaluator<Dim>()),
       scheme_(DensityScheme::New(properties_.subDict("densityScheme"))),
@@ -116,6 +116,8 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
       c_(particles_->scalarField("soundSpeed")),
       h_(particles_->scalarField("smoothingLength")),
       material_(particles_->integerField("material")) {
+    declarePhases(
+        {"updateNeighbours", "densitySums", "equationOfState", "computeRates", "strength", "integrate"});
     readMaterials();
     initialiseFields();
     // Checked here, though the Verlet list is built on the first step: read there only, a correct
@@ -129,11 +131,7 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
         if (!anyStrength_)
             throw as->error("epsilon", "artificial stress acts on solids: no material has a strength law");
     }
-    if (std::filesystem::exists(run.runCase().constantFile("boundaryConditions"))) {
-        boundaryDict_ = run.runCase().readConstant("boundaryConditions");
-        boundaries_ = BoundaryConditionList<Dim>(*boundaryDict_, *particles_);
-        Log::info("Boundary conditions:\n" + boundaries_.summary());
-    }
+    boundaries_ = readBoundaryConditions(*particles_);
 }
 
 template <int Dim>
@@ -158,6 +156,7 @@ void SphSolver<Dim>::readMaterials() {
 template <int Dim>
 void SphSolver<Dim>::initialiseFields() {
     const std::size_t n = x_.size();
+    checkPositiveMassAndDensity(*particles_, m_, rho_);
     if (needsEnergy_) {
         const bool hadEnergy = particles_->hasField("specificInternalEnergy");
         e_ = &particles_->scalarField("specificInternalEnergy");
@@ -171,13 +170,8 @@ void SphSolver<Dim>::initialiseFields() {
                 (*e_)[i] = energyForPressure(*materials_[material_[i]].eos, rho_[i], p_[i]);
         }
     }
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!(m_[i] > 0) || !(rho_[i] > 0))
-            throw InputError("particle " + std::to_string(particles_->globalId()[i]) + " has mass " +
-                             std::to_string(m_[i]) + " and density " + std::to_string(rho_[i]) +
-                             ": both must be positive");
+    for (std::size_t i = 0; i < n; ++i)
         if (!(h_[i] > 0)) h_[i] = hLaw_->initial(Dim, m_[i], rho_[i]);
-    }
     if (scheme_->gradH()) omega_ = &particles_->scalarField("omega");
     if (hLaw_->needsNumberDensity() || scheme_->gradH()) number_ = &particles_->scalarField("numberDensity");
     // The leapfrog carries the half-step state between steps; the predictor-corrector does not.
@@ -252,7 +246,7 @@ void SphSolver<Dim>::removeGhosts() {
 
 template <int Dim>
 void SphSolver<Dim>::updateNeighbours() {
-    Stopwatch watch;
+    auto timed = phase("updateNeighbours");
     std::vector<double>& radius = radius_;
     radius.resize(x_.size());
     for (std::size_t i = 0; i < x_.size(); ++i) radius[i] = kernel_->supportRadius(h_[i]);
@@ -267,7 +261,6 @@ void SphSolver<Dim>::updateNeighbours() {
     ++neighbourUpdates_;
     neighbours_.list = &verlet_->candidates();
     neighbours_.selected = nullptr, neighbours_.count = nullptr;
-    neighbourSeconds_ += watch.seconds();
 }
 
 // f(h) = c_i Σ_j b_j W_ij(h) − m_i (η/h)^d, f'(h) = c_i Σ_j b_j ∂W_ij/∂h + d m_i η^d / h^{d+1}; Newton
@@ -275,7 +268,7 @@ void SphSolver<Dim>::updateNeighbours() {
 // candidate list: its upper end is the radius the list was built for (support + skin).
 template <int Dim>
 void SphSolver<Dim>::solveSmoothingLength() {
-    Stopwatch watch;
+    auto timed = phase("densitySums");
     if (!scheme_->explicitSummation())
         throw properties_.error("smoothingLength",
                                 "the summation smoothing length needs an explicit density sum "
@@ -321,12 +314,11 @@ void SphSolver<Dim>::solveSmoothingLength() {
         Log::warning("summation smoothing length: some particles did not converge to the tolerance in " +
                      std::to_string(maxIterations) + " iterations (step " +
                      std::to_string(time().timeIndex()) + ")");
-    sumSeconds_ += watch.seconds();
 }
 
 template <int Dim>
 void SphSolver<Dim>::computeEquationOfState() {
-    Stopwatch watch;
+    auto timed = phase("equationOfState");
     const std::size_t n = nReal_;
     parallelFor(n, [&](std::size_t i) {
         const EquationOfState& eos = *materials_[material_[i]].eos;
@@ -335,12 +327,11 @@ void SphSolver<Dim>::computeEquationOfState() {
     });
     copyToGhosts(p_);
     copyToGhosts(c_);
-    eosSeconds_ += watch.seconds();
 }
 
 template <int Dim>
 void SphSolver<Dim>::computeKernelFactors() {
-    Stopwatch watch;
+    auto timed = phase("densitySums");
     const std::size_t n = x_.size();
     invH_.resize(n), wNorm_.resize(n), dhNorm_.resize(n), gradNorm_.resize(n), volume_.resize(n);
     const KernelEvaluator<Dim> W = W_;
@@ -355,7 +346,6 @@ void SphSolver<Dim>::computeKernelFactors() {
         gradNorm_[i] = c * invH;
         volume_[i] = m_[i] / rho_[i];
     });
-    sumSeconds_ += watch.seconds();
 }
 
 // The candidates (support + skin) cut to the pairs within either support, r < max(H_i, H_j),
@@ -366,7 +356,7 @@ void SphSolver<Dim>::computeKernelFactors() {
 // independently (any thread count gives the same list).
 template <int Dim>
 void SphSolver<Dim>::selectNeighbours() {
-    Stopwatch watch;
+    auto timed = phase("updateNeighbours");
     const NeighbourList& list = verlet_->candidates();
     const std::size_t n = nReal_;
     selected_.resize(list.pairCount());
@@ -388,7 +378,6 @@ void SphSolver<Dim>::selectNeighbours() {
     });
     neighbours_.selected = selected_.data();
     neighbours_.count = selectedCount_.data();
-    neighbourSeconds_ += watch.seconds();
 }
 
 // Loop A: S_i, ω_i, ñ_i and, when ρ is not summed (so m_j/ρ_j is already this step's), the
@@ -396,7 +385,7 @@ void SphSolver<Dim>::selectNeighbours() {
 // beyond it add exact zeros to every sum, so they are skipped).
 template <int Dim>
 void SphSolver<Dim>::computeDensitySums() {
-    Stopwatch watch;
+    auto timed = phase("densitySums");
     const std::size_t n = nReal_;
     scheme_->coefficients(x_.size(), m_.data(), rho_.data(), a_.data(), b_.data(), cc_.data());
     const bool summation = scheme_->summation();
@@ -447,12 +436,11 @@ void SphSolver<Dim>::computeDensitySums() {
     }
     if (omega_) copyToGhosts(*omega_);
     if (number_) copyToGhosts(*number_);
-    sumSeconds_ += watch.seconds();
 }
 
 template <int Dim>
 void SphSolver<Dim>::computeRates() {
-    Stopwatch watch;
+    auto timed = phase("computeRates");
     const std::size_t n = nReal_;
     const DissipationParameters d = diss_;
     const bool riemann = d.kind == DissipationParameters::Kind::riemann;
@@ -609,7 +597,6 @@ void SphSolver<Dim>::computeRates() {
             dedt_[i] += (taui.cwiseProduct(velocityGradient_[i])).sum() / rhoi;
         }
     });
-    rateSeconds_ += watch.seconds();
 }
 
 template <int Dim>
@@ -637,7 +624,7 @@ void SphSolver<Dim>::ensureRates() {
 template <int Dim>
 void SphSolver<Dim>::computeVelocityGradient() {
     if (gradientWithSums_) return;  // done in the density-sum loop
-    Stopwatch watch;
+    auto timed = phase("strength");
     const KernelEvaluator<Dim> W = W_;
     parallelForWork(nReal_, neighbours_.list->pairCount(), [&](std::size_t i) {
         Tensor<Dim> L = Tensor<Dim>::Zero();
@@ -653,7 +640,6 @@ void SphSolver<Dim>::computeVelocityGradient() {
         }
         velocityGradient_[i] = L;
     });
-    strengthSeconds_ += watch.seconds();
 }
 
 template <int Dim>
@@ -671,14 +657,13 @@ typename Strength<Dim>::Fields SphSolver<Dim>::strengthFields(std::size_t i, Sym
 
 template <int Dim>
 void SphSolver<Dim>::computeStressRate() {
-    Stopwatch watch;
+    auto timed = phase("strength");
     parallelFor(nReal_, [&](std::size_t i) {
         if (const auto& law = materials_[material_[i]].strength)
             law->stressRate(strengthFields(i, &(*tau_)[i]));
         else
             dtaudt_[i] = SymmTensor<Dim>{};
     });
-    strengthSeconds_ += watch.seconds();
 }
 
 template <int Dim>
@@ -709,7 +694,7 @@ TimeStepVote SphSolver<Dim>::stableTimeStep() {
 template <int Dim>
 void SphSolver<Dim>::stepPredictorCorrector(double dt) {
     ensureRates();
-    Stopwatch watch;
+    auto timed = phase("integrate");
     const std::size_t n = x_.size();
     const bool continuity = !scheme_->summation();
     const auto x0 = x_;
@@ -741,10 +726,10 @@ void SphSolver<Dim>::stepPredictorCorrector(double dt) {
     if (temperature_) *temperature_ = heat;
     if (!boundaries_.empty()) boundaries_.constrainVelocity(*particles_, v_, t + 0.5 * dt);
     updateSmoothingLength();
-    integrateSeconds_ += watch.seconds();
+    timed.stop();
     ratesValid_ = false;
     ensureRates();
-    watch.restart();
+    timed.resume();
     // Corrector over the whole step with the midpoint rates.
     advance(dt);
     if (tau_) returnToYieldSurface(*tau_, dt);
@@ -755,7 +740,7 @@ void SphSolver<Dim>::stepPredictorCorrector(double dt) {
     ratesValid_ = false;
     started_ = true;
     previousDeltaT_ = dt;
-    integrateSeconds_ += watch.seconds();
+    timed.stop();
     updateSmoothingLength();
     checkState("integrate");
 }
@@ -764,7 +749,7 @@ template <int Dim>
 void SphSolver<Dim>::step(double dt) {
     if (predictorCorrector_) return stepPredictorCorrector(dt);
     ensureRates();
-    Stopwatch watch;
+    auto timed = phase("integrate");
     const std::size_t n = x_.size();
     const double weight = started_ ? 0.5 * (previousDeltaT_ + dt) : 0.5 * dt;
     const bool continuity = rhoHalf_ != nullptr;
@@ -815,7 +800,7 @@ void SphSolver<Dim>::step(double dt) {
     started_ = true;
     previousDeltaT_ = dt;
     ratesValid_ = false;
-    integrateSeconds_ += watch.seconds();
+    timed.stop();
     updateSmoothingLength();
     checkState("integrate");
 }
@@ -826,20 +811,15 @@ void SphSolver<Dim>::updateSmoothingLength() {
 }
 
 template <int Dim>
-void SphSolver<Dim>::checkState(const char* phase) const {
-    const std::size_t n = x_.size();
+void SphSolver<Dim>::checkState(const char* phaseName) const {
     auto bad = [&](std::size_t i) {
         return !(rho_[i] > 0) || !std::isfinite(rho_[i]) || !x_[i].allFinite() || !v_[i].allFinite() ||
                !std::isfinite(p_[i]) || !(c_[i] > 0) || !(h_[i] > 0) || (e_ && !std::isfinite((*e_)[i]));
     };
-    const double count = Reduce::sum<double>(n, [&](std::size_t i) { return bad(i) ? 1.0 : 0.0; });
-    if (count == 0) return;
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!bad(i)) continue;
+    Solver::checkState(phaseName, x_.size(), bad, [&](std::size_t i, double count) {
         std::ostringstream s;
         s.precision(6);
-        s << "phase " << phase << ", step " << time().timeIndex() + 1 << ", t = " << time().value()
-          << ": particle " << particles_->globalId()[i] << " (region " << particles_->region()[i]
+        s << "particle " << particles_->globalId()[i] << " (region " << particles_->region()[i]
           << ", material " << materials_[material_[i]].name << ") has density " << rho_[i] << ", pressure "
           << p_[i] << ", sound speed " << c_[i] << ", h " << h_[i];
         if (e_) s << ", e " << (*e_)[i];
@@ -849,8 +829,8 @@ void SphSolver<Dim>::checkState(const char* phase) const {
               << "): the state has left the model's range of validity (for mieGruneisen, strong "
                  "compression with little heating; try hugoniot linearUsUp, a smaller deltaT or more "
                  "dissipation)";
-        throw RunError(s.str());
-    }
+        return s.str();
+    });
 }
 
 template <int Dim>
@@ -876,12 +856,9 @@ void SphSolver<Dim>::restoreSolverState(const Dictionary& state) {
 
 template <int Dim>
 std::vector<std::pair<std::string, double>> SphSolver<Dim>::phaseTimes() const {
-    return {{"updateNeighbours (" + std::to_string(rebuilds_) + " rebuilds)", neighbourSeconds_},
-            {"densitySums", sumSeconds_},
-            {"equationOfState", eosSeconds_},
-            {"computeRates", rateSeconds_},
-            {"strength", strengthSeconds_},
-            {"integrate", integrateSeconds_}};
+    auto phases = Solver::phaseTimes();  // updateNeighbours first (declared so)
+    phases.front().first += " (" + std::to_string(rebuilds_) + " rebuilds)";
+    return phases;
 }
 
 template <int Dim>

@@ -60,11 +60,6 @@ public:
     std::optional<double> internalEnergy() const override;
     std::string solverState() const override;
     void restoreSolverState(const Dictionary& state) override;
-    std::vector<const Dictionary*> dictionaries() const override {
-        std::vector<const Dictionary*> d{&properties_, &materialProperties_};
-        if (boundaryDict_) d.push_back(&*boundaryDict_);
-        return d;
-    }
     std::vector<std::pair<std::string, double>> phaseTimes() const override;
     std::vector<std::string> summary(double loopSeconds) const override;
 
@@ -98,8 +93,8 @@ private:
 
     std::unique_ptr<ParticleSet<Dim>> owner_;
     ParticleSet<Dim>* particles_;
-    Dictionary properties_;
-    Dictionary materialProperties_;
+    const Dictionary& properties_;
+    const Dictionary& materialProperties_;
     std::unique_ptr<Kernel> kernel_;
     KernelEvaluator<Dim> W_;
     std::unique_ptr<DensityScheme> scheme_;
@@ -156,7 +151,6 @@ private:
     // grown) by more than the skin allows; pairs beyond the support cost a kernel evaluation
     // that returns zero. neighbours_ points at the current list.
     std::unique_ptr<VerletList<Dim>> verlet_;
-    std::optional<Dictionary> boundaryDict_;
     BoundaryConditionList<Dim> boundaries_;
     // Mirror ghosts of this step, appended after the nReal_ real particles while the rates are
     // computed and removed before anything else sees the particles.
@@ -179,8 +173,6 @@ private:
     bool ratesValid_ = false;
     bool started_ = false;
     double previousDeltaT_ = 0;
-    double neighbourSeconds_ = 0, eosSeconds_ = 0, sumSeconds_ = 0, rateSeconds_ = 0, integrateSeconds_ = 0,
-           strengthSeconds_ = 0;
 };
 
 extern template class SphSolver<1>;

@@ -68,8 +68,8 @@ TlSphSolver<Dim>::TlSphSolver(SolverRun& run)
     : Solver(run),
       owner_(adoptParticleSet<Dim>(run.takeParticles())),
       particles_(owner_.get()),
-      properties_(run.runCase().readConstant("tlSphProperties")),
-      materialProperties_(run.runCase().readConstant("materialProperties")),
+      properties_(openConstant("tlSphProperties")),
+      materialProperties_(openConstant("materialProperties")),
       kernel_(Kernel::New(properties_.subDict("kernel"))),
       formulation_(Formulation::New(properties_.subDict("formulation"))),
       dissipationModel_(TlDissipation::New(properties_.subDict("dissipation"))),
@@ -78,6 +78,7 @@ TlSphSolver<Dim>::TlSphSolver(SolverRun& run)
       v_(particles_->vectorField("velocity")),
       m_(requireScalarField(*particles_, "mass", "particle masses")),
       rho0_(requireScalarField(*particles_, "density", "the reference density rho0")) {
+    declarePhases({"computeStress", "computeRates", "dissipation", "projections", "integrate"});
     const Dictionary* projection = properties_.findDict("projection");
     projectMomentum_ = readSwitch(projection, "momentum");
     projectDissipation_ = readSwitch(projection, "dissipation");
@@ -93,7 +94,7 @@ TlSphSolver<Dim>::TlSphSolver(SolverRun& run)
     if (!(alphaCFL_ > 0 && alphaCFL_ <= 1)) throw properties_.error("alphaCFL", "alphaCFL must be in (0, 1]");
     if (properties_.found("gravity")) gravity_ = properties_.get<Vector<Dim>>("gravity");
     readMaterials();
-    initialiseFields(run);
+    initialiseFields();
 }
 
 template <int Dim>
@@ -114,14 +115,11 @@ void TlSphSolver<Dim>::readMaterials() {
 }
 
 template <int Dim>
-void TlSphSolver<Dim>::initialiseFields(SolverRun& run) {
+void TlSphSolver<Dim>::initialiseFields() {
     const std::size_t n = x_.size();
     V_.resize(n);
+    checkPositiveMassAndDensity(*particles_, m_, rho0_);
     for (std::size_t i = 0; i < n; ++i) {
-        if (!(m_[i] > 0) || !(rho0_[i] > 0))
-            throw InputError("particle " + std::to_string(particles_->globalId()[i]) + " has mass " +
-                             std::to_string(m_[i]) + " and density " + std::to_string(rho0_[i]) +
-                             ": both must be positive");
         const double lawRho0 = laws_[(*material_)[i]]->referenceDensity();
         if (std::abs(rho0_[i] - lawRho0) > 1e-9 * lawRho0)
             throw materialProperties_.error(
@@ -185,11 +183,7 @@ void TlSphSolver<Dim>::initialiseFields(SolverRun& run) {
     std::fill(smoothingLength.begin(), smoothingLength.end(), h_);
     // The boundary conditions pick their particles from the initial state (skewSymmetricPlane
     // from the reference positions), so they are built after it.
-    if (std::filesystem::exists(run.runCase().constantFile("boundaryConditions"))) {
-        boundaryDict_ = run.runCase().readConstant("boundaryConditions");
-        boundaries_ = BoundaryConditionList<Dim>(*boundaryDict_, *particles_);
-        Log::info("Boundary conditions:\n" + boundaries_.summary());
-    }
+    boundaries_ = readBoundaryConditions(*particles_);
     makeMirrorGhosts();
     typename ReferenceOperators<Dim>::Options options;
     options.laplacian = true;
@@ -275,7 +269,7 @@ Tensor<3> TlSphSolver<Dim>::cofactor3(std::size_t i) const {
 
 template <int Dim>
 void TlSphSolver<Dim>::computeStress(bool updateState) {
-    Stopwatch watch;
+    auto timed = phase("computeStress");
     parallelForWork(x_.size(), 32 * x_.size(), [&](std::size_t i) {
         const Tensor<3> F3 = embed<Dim>((*F_)[i], 1.0);
         const Tensor<3> H3 = cofactor3(i);
@@ -303,7 +297,6 @@ void TlSphSolver<Dim>::computeStress(bool updateState) {
         (*P_)[i] = inPlane<Dim>(P3);
         (*pressure_)[i] = pressure;
     });
-    stressSeconds_ += watch.seconds();
 }
 
 template <int Dim>
@@ -432,7 +425,7 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
         computeStress(false);
     }
     stressCurrent_ = false;
-    Stopwatch watch;
+    auto rateTime = phase("computeRates");
     const std::size_t n = x_.size();
     const auto& rows = operators_->neighbours();
     const auto& offsets = rows.offsets();
@@ -472,10 +465,10 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
         if (lapJacobian) lapJ_[a] = LJ;
     });
     pairInteractions_ += double(offsets[n]);
-    rateSeconds_ += watch.seconds();
+    rateTime.stop();
 
     // Dissipation: D(U) = (eps2 c h [+ mu_vis/rho0]) L[U] - eps4 c h^3 L^2[U].
-    watch.restart();
+    auto dissipationTime = phase("dissipation");
     const double c = cpMax_, h = spacing_;
     std::vector<Vector<Dim>> dissipationP;
     std::vector<double> dissipationJ;
@@ -510,11 +503,11 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
             dissipationJ[a] = d;
         });
     }
-    dissipationSeconds_ += watch.seconds();
+    dissipationTime.stop();
 
     // Conservation projections (linear in the force: projecting the sum is the sum of the
     // projections, so one solve serves both when both are on).
-    watch.restart();
+    auto projectionTime = phase("projections");
     if (!dissipationP.empty()) {
         if (projectMomentum_ == projectDissipation_) {
             parallelFor(n, [&](std::size_t a) { force[a] += dissipationP[a]; });
@@ -531,7 +524,7 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
         if (projectJacobian_) MomentumProjection<Dim>::mean(dissipationJ, V_);
         parallelFor(n, [&](std::size_t a) { dJdt_[a] += dissipationJ[a]; });
     }
-    projectionSeconds_ += watch.seconds();
+    projectionTime.stop();
 
     // External forces, then the essential boundary conditions on the rate.
     if (!boundaries_.empty()) {
@@ -599,7 +592,7 @@ void TlSphSolver<Dim>::step(double dt) {
 
     // Stage 1: U* = U^n + dt U'(U^n), moments about x~ = x^n.
     computeRates(x0_, t);
-    Stopwatch watch;
+    auto integrateTime = phase("integrate");
     parallelFor(n, [&](std::size_t i) {
         x_[i] = x0_[i] + dt * v0_[i];
         v_[i] = v0_[i] + dt * acceleration_[i];
@@ -614,12 +607,12 @@ void TlSphSolver<Dim>::step(double dt) {
     // x~ = x^n + dt/2 (v^n + v*) = x^{n+1}.
     std::vector<Vector<Dim>> xTilde(n);
     parallelFor(n, [&](std::size_t i) { xTilde[i] = x0_[i] + 0.5 * dt * (v0_[i] + v_[i]); });
-    integrateSeconds_ += watch.seconds();
+    integrateTime.stop();
     checkState("stage 1");
 
     // Stage 2 and the average: U^{n+1} = (U^n + U* + dt U'(U*)) / 2.
     computeRates(xTilde, tEnd);
-    watch.restart();
+    integrateTime.resume();
     parallelFor(n, [&](std::size_t i) {
         x_[i] = 0.5 * (x0_[i] + x_[i] + dt * v_[i]);
         v_[i] = 0.5 * (v0_[i] + v_[i] + dt * acceleration_[i]);
@@ -631,7 +624,7 @@ void TlSphSolver<Dim>::step(double dt) {
         boundaries_.constrainVelocity(*particles_, v_, tEnd);
         boundaries_.constrainPosition(*particles_, tEnd);
     }
-    integrateSeconds_ += watch.seconds();
+    integrateTime.stop();
     // P^{n+1} for the output and the plastic state that goes with it.
     if (formulation_->displacementBased()) computeDisplacementGradient();
     computeStress(true);
@@ -640,21 +633,16 @@ void TlSphSolver<Dim>::step(double dt) {
 }
 
 template <int Dim>
-void TlSphSolver<Dim>::checkState(const char* phase) const {
-    const std::size_t n = x_.size();
+void TlSphSolver<Dim>::checkState(const char* phaseName) const {
     auto jacobian = [&](std::size_t i) { return J_ ? (*J_)[i] : (*F_)[i].determinant(); };
     auto bad = [&](std::size_t i) {
         return !x_[i].allFinite() || !v_[i].allFinite() || !(*F_)[i].allFinite() || !(jacobian(i) > 0) ||
                !(*P_)[i].allFinite();
     };
-    const double count = Reduce::sum<double>(n, [&](std::size_t i) { return bad(i) ? 1.0 : 0.0; });
-    if (count == 0) return;
-    for (std::size_t i = 0; i < n; ++i) {
-        if (!bad(i)) continue;
+    Solver::checkState(phaseName, x_.size(), bad, [&](std::size_t i, double count) {
         std::ostringstream s;
         s.precision(6);
-        s << "phase " << phase << ", step " << time().timeIndex() + 1 << ", t = " << time().value()
-          << ": particle " << particles_->globalId()[i] << " (reference position " << (*X_)[i].transpose()
+        s << "particle " << particles_->globalId()[i] << " (reference position " << (*X_)[i].transpose()
           << ", material " << lawNames_[(*material_)[i]] << ") has J = " << jacobian(i)
           << ", |v| = " << v_[i].norm() << ", |F| = " << (*F_)[i].norm() << "; " << count
           << " particles affected.\n    ";
@@ -666,8 +654,8 @@ void TlSphSolver<Dim>::checkState(const char* phase) const {
             s << "The state is no longer finite: the step is unstable (alphaCFL " << alphaCFL_
               << "; JST eps4 must exceed alphaCFL^3/8), or a boundary condition drives the body "
                  "faster than the material can carry.";
-        throw RunError(s.str());
-    }
+        return s.str();
+    });
 }
 
 template <int Dim>
@@ -718,15 +706,6 @@ double TlSphSolver<Dim>::compatibilityError() const {
     return Reduce::max(u.size(), [&](std::size_t i) {
         return ((*F_)[i] - Tensor<Dim>::Identity() - grad[i]).norm() / std::max(1.0, (*F_)[i].norm());
     });
-}
-
-template <int Dim>
-std::vector<std::pair<std::string, double>> TlSphSolver<Dim>::phaseTimes() const {
-    return {{"computeStress", stressSeconds_},
-            {"computeRates", rateSeconds_},
-            {"dissipation", dissipationSeconds_},
-            {"projections", projectionSeconds_},
-            {"integrate", integrateSeconds_}};
 }
 
 template <int Dim>

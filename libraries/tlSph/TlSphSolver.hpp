@@ -60,12 +60,6 @@ public:
     void step(double dt) override;
     ParticleSetBase& particles() override { return *particles_; }
     std::optional<double> internalEnergy() const override;
-    std::vector<const Dictionary*> dictionaries() const override {
-        std::vector<const Dictionary*> d{&properties_, &materialProperties_};
-        if (boundaryDict_) d.push_back(&*boundaryDict_);
-        return d;
-    }
-    std::vector<std::pair<std::string, double>> phaseTimes() const override;
     std::vector<std::string> summary(double loopSeconds) const override;
 
     // Sigma V |L[p]| h^2 / Sigma V |p| over the particles (p the pressure): the pressure
@@ -77,7 +71,7 @@ public:
 
 private:
     void readMaterials();
-    void initialiseFields(SolverRun& run);
+    void initialiseFields();
     void makeMirrorGhosts();
     // How a quantity maps to a mirror ghost: vector s Q a (scalars s a), tensor s Q A Q^T,
     // deformation I + s Q (A - I) Q^T (scalars 1 + s (J - 1)), copy.
@@ -94,9 +88,8 @@ private:
 
     std::unique_ptr<ParticleSet<Dim>> owner_;
     ParticleSet<Dim>* particles_;
-    Dictionary properties_;
-    Dictionary materialProperties_;
-    std::optional<Dictionary> boundaryDict_;
+    const Dictionary& properties_;
+    const Dictionary& materialProperties_;
     std::unique_ptr<Kernel> kernel_;
     std::unique_ptr<Formulation> formulation_;
     std::unique_ptr<TlDissipation> dissipationModel_;
@@ -153,8 +146,6 @@ private:
 
     bool stressCurrent_ = false;  // P belongs to the present F, H, J (no stage has moved them since)
     double pairInteractions_ = 0;
-    double stressSeconds_ = 0, rateSeconds_ = 0, dissipationSeconds_ = 0, projectionSeconds_ = 0,
-           integrateSeconds_ = 0;
 };
 
 extern template class TlSphSolver<1>;
