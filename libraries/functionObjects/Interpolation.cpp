@@ -23,13 +23,15 @@
 //   per point whatever the number of fields. Any linear field is reproduced exactly (to
 //   round-off) wherever M is invertible, i.e. the neighbours span d dimensions; where they do
 //   not (fewer than d+1 neighbours, or all on one line in 2D), the point falls back to Shepard
-//   and is flagged.
+//   and is flagged. The fit is LeastSquaresOperators (libraries/meshfreeOperators) in value form,
+//   order 1, with these scatter weights: phi_j is its value weight.
 //
 // Volumes V_j: mass/density when both fields exist, else a `volume` field, else one common
 // volume (spacing^d on a uniform lattice), whose value cancels from both normalised forms.
 #include "functionObjects/Interpolation.hpp"
 
 #include "core/Error.hpp"
+#include "meshfreeOperators/LeastSquaresOperators.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
@@ -45,8 +47,31 @@ namespace {
 // the solve while still catching neighbours that are (nearly) collinear.
 constexpr double minReciprocalCondition = 1e-10;
 
-using SmallMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 4, 4>;
-using SmallVector = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, 4, 1>;
+// The first-order MLS shape functions of the stencil's particles at x: LeastSquaresOperators in
+// value form with the stencil's weights, over the stencil alone (one row), scaled by H. False where
+// the fit is undetermined (the caller falls back to Shepard); s.weights is then untouched.
+template <int Dim>
+bool mlsWeights(const std::vector<SamplePoint>& position, const SamplePoint& x, double H,
+                Interpolation::Stencil& s) {
+    const std::size_t m = s.particles.size();
+    std::vector<Vector<Dim>> neighbours(m);
+    for (std::size_t q = 0; q < m; ++q)
+        for (int k = 0; k < Dim; ++k) neighbours[q][k] = position[s.particles[q]][k];
+    Vector<Dim> point;
+    for (int k = 0; k < Dim; ++k) point[k] = x[k];
+    std::vector<NeighbourList::Index> row(m);
+    for (std::size_t q = 0; q < m; ++q) row[q] = NeighbourList::Index(q);
+    typename LeastSquaresOperators<Dim>::Options options;
+    options.order = 1;
+    options.form = LeastSquaresOperators<Dim>::Form::value;
+    options.minReciprocalCondition = minReciprocalCondition;
+    options.onFailure = LeastSquaresOperators<Dim>::OnFailure::flag;
+    LeastSquaresOperators<Dim> mls(options);
+    mls.rebuild({point}, neighbours, NeighbourList({0, m}, std::move(row)), s.weights, {H});
+    if (mls.status()[0] != LeastSquaresOperators<Dim>::Status::ok) return false;
+    s.weights = mls.value();
+    return true;
+}
 }  // namespace
 
 std::string Interpolation::methodName(Method method) {
@@ -184,28 +209,10 @@ Interpolation::Stencil Interpolation::stencil(const SamplePoint& point) const {
     for (double w : s.weights) sum += w;
 
     if (method_ == Method::mls) {
-        const int m = dim_ + 1;
-        SmallMatrix M = SmallMatrix::Zero(m, m);
-        SmallVector p(m);
-        auto basis = [&](std::size_t j) {
-            p(0) = 1.0;
-            for (int k = 0; k < dim_; ++k) p(k + 1) = (position_[j][k] - x[k]) / maxSupport_;
-        };
-        // Normalising the weights by their sum leaves phi unchanged and keeps M of order one.
-        for (std::size_t q = 0; q < s.particles.size(); ++q) {
-            basis(s.particles[q]);
-            M.noalias() += (s.weights[q] / sum) * p * p.transpose();
-        }
-        Eigen::SelfAdjointEigenSolver<SmallMatrix> eigen(M);
-        const auto& lambda = eigen.eigenvalues();  // ascending
-        if (eigen.info() == Eigen::Success && lambda(0) > minReciprocalCondition * lambda(m - 1)) {
-            SmallVector e0 = SmallVector::Zero(m);
-            e0(0) = 1.0;
-            const SmallVector z = M.ldlt().solve(e0);
-            for (std::size_t q = 0; q < s.particles.size(); ++q) {
-                basis(s.particles[q]);
-                s.weights[q] = (s.weights[q] / sum) * z.dot(p);
-            }
+        const bool determined = dim_ == 1   ? mlsWeights<1>(position_, x, maxSupport_, s)
+                                : dim_ == 2 ? mlsWeights<2>(position_, x, maxSupport_, s)
+                                            : mlsWeights<3>(position_, x, maxSupport_, s);
+        if (determined) {
             s.status = Status::ok;
             return s;
         }

@@ -2,12 +2,14 @@
 
 #include "core/Error.hpp"
 #include "core/Parallel.hpp"
+#include "meshfreeOperators/LeastSquaresOperators.hpp"
 #include "particles/NeighbourSearch.hpp"
 
 #include <Eigen/LU>
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace mfdyn {
@@ -136,6 +138,21 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
     const KernelEvaluator<Dim> W = kernel.evaluator<Dim>();
     std::vector<unsigned char> failure(n, none);
 
+    // The order-1 least-squares gradient on the reference rows (difference form), with failures
+    // flagged so that they are reported below in this class's words. Same threshold as the
+    // matrices checked here: the scaled moment matrix has the eigenvalue ratio of the unscaled one.
+    using LeastSquares = LeastSquaresOperators<Dim>;
+    auto leastSquaresGradient = [&](typename LeastSquares::KernelWeight shape) {
+        typename LeastSquares::Options fit;
+        fit.order = 1;
+        fit.form = LeastSquares::Form::difference;
+        fit.minReciprocalCondition = minReciprocalCondition;
+        fit.onFailure = LeastSquares::OnFailure::flag;
+        LeastSquares ops(fit);
+        ops.rebuild(X_, X_, list_, volume_, std::vector<double>(n, h), kernel, shape);
+        return ops;
+    };
+
     // Mirror pairs: the list is symmetric (one support radius), so a is in row b.
     mirror_.assign(pairs, 0);
     parallelFor(n, [&](std::size_t a) {
@@ -175,20 +192,16 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
         alpha.assign(n, 0.0);
         beta.assign(n, Vector<Dim>::Zero());
         const double W0 = W.W(0.0, h);
+        // beta_a = -[sum V W r (x) r]^-1 sum V W r is the sum over the row of the order-1
+        // least-squares gradient weights with w_ab = V_b W_b(X_a) (r_ab = -(X_b - X_a)).
+        const LeastSquares kernelFit = leastSquaresGradient(LeastSquares::KernelWeight::value);
         parallelFor(n, [&](std::size_t a) {
-            Tensor<Dim> M = Tensor<Dim>::Zero();
-            Vector<Dim> s = Vector<Dim>::Zero();
-            for (std::size_t k = offsets[a]; k < offsets[a + 1]; ++k) {
-                const Vector<Dim> r = X_[a] - X_[indices[k]];
-                const double vw = volume_[indices[k]] * value[k];
-                M.noalias() += vw * r * r.transpose();
-                s += vw * r;
-            }
-            if (!wellConditioned<Dim>(M)) {
+            if (kernelFit.status()[a] != LeastSquares::Status::ok) {
                 failure[a] = kernelMatrix;
                 return;
             }
-            const Vector<Dim> be = -M.fullPivLu().solve(s);
+            Vector<Dim> be = Vector<Dim>::Zero();
+            for (std::size_t k = offsets[a]; k < offsets[a + 1]; ++k) be += kernelFit.gradient()[k];
             double sum = volume_[a] * W0;
             for (std::size_t k = offsets[a]; k < offsets[a + 1]; ++k)
                 sum += volume_[indices[k]] * value[k] * (1.0 + be.dot(X_[a] - X_[indices[k]]));
@@ -208,6 +221,9 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
     }
 
     // Gradient.
+    std::optional<LeastSquares> correctedFit;
+    if (options_.gradient == GradientCorrection::corrected)
+        correctedFit.emplace(leastSquaresGradient(LeastSquares::KernelWeight::radialDerivative));
     gradient_.assign(pairs, Vector<Dim>::Zero());
     parallelFor(n, [&](std::size_t a) {
         const std::size_t k0 = offsets[a], k1 = offsets[a + 1];
@@ -215,14 +231,22 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
             for (std::size_t k = k0; k < k1; ++k) gradient_[k] = plainGradient[k];
             return;
         }
-        if (options_.gradient == GradientCorrection::correctedKernel) {
-            // grad W~_b(X_a) with alpha_a, beta_a frozen; corrected below like the plain gradient.
+        if (options_.gradient == GradientCorrection::corrected) {
+            // L_a grad W_b(X_a) is the order-1 least-squares gradient weight with
+            // w_ab = -V_b W'(r)/r, divided by V_b (applied with V_b in the sums).
+            if (correctedFit->status()[a] != LeastSquares::Status::ok) {
+                failure[a] = gradientMatrix;
+                return;
+            }
             for (std::size_t k = k0; k < k1; ++k)
-                gradient_[k] = alpha[a] * (value[k] * beta[a] +
-                                           (1.0 + beta[a].dot(X_[a] - X_[indices[k]])) * plainGradient[k]);
-        } else {
-            for (std::size_t k = k0; k < k1; ++k) gradient_[k] = plainGradient[k];
+                gradient_[k] = correctedFit->gradient()[k] / volume_[indices[k]];
+            return;
         }
+        // correctedKernel: grad W~_b(X_a) with alpha_a, beta_a frozen, then corrected by its own
+        // L~_a (its vectors are not parallel to X_b - X_a, so this is not a least-squares fit).
+        for (std::size_t k = k0; k < k1; ++k)
+            gradient_[k] = alpha[a] * (value[k] * beta[a] +
+                                       (1.0 + beta[a].dot(X_[a] - X_[indices[k]])) * plainGradient[k]);
         Tensor<Dim> M = Tensor<Dim>::Zero();
         for (std::size_t k = k0; k < k1; ++k)
             M.noalias() += volume_[indices[k]] * gradient_[k] * (X_[indices[k]] - X_[a]).transpose();

@@ -46,6 +46,12 @@
 // below 1e-8: too few neighbours, or all on a line/plane) or that have no neighbour at all stop
 // the construction with an Error naming the particle index and position.
 //
+// The corrected gradient and beta_a are order-1 least-squares fits (LeastSquaresOperators.hpp,
+// difference form): L_a V_b grad W_b(X_a) is its gradient weight with w_ab = -V_b W'(r)/r, and
+// beta_a the sum over the row of its gradient weights with w_ab = V_b W_b(X_a). The
+// correctedKernel gradient (its vectors are not along X_b - X_a) and the Laplacian correction (two
+// moment conditions, not a fit) are computed here.
+//
 // Everything is computed in gather loops over rows (parallelFor): results are bit-identical for
 // any thread count.
 #include "core/Dictionary.hpp"
