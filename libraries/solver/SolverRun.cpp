@@ -373,8 +373,10 @@ void SolverRun::summary(const Solver& solver, double steppingSeconds, std::int64
                   formatSeconds(steppingSeconds).c_str(), formatSeconds(writeSeconds_).c_str());
     s << line;
     // After a restart the step index counts from t = 0; the rate is of the steps this run took.
-    s << "    steps                " << stepsRun << " (to step " << time.timeIndex()
-      << ", t = " << time.timeName() << ")\n";
+    // A fresh run's line is unchanged ("N to t = T"): scripts read it.
+    s << "    steps                " << stepsRun << " to t = " << time.timeName();
+    if (stepsRun != time.timeIndex()) s << " (from step " << time.timeIndex() - stepsRun << ")";
+    s << "\n";
     s << "    particles            " << n << "\n";
     std::snprintf(line, sizeof line, "    particle-steps/s     %.4g (%d threads)\n",
                   steppingSeconds > 0 ? double(n) * double(stepsRun) / steppingSeconds : 0.0, threadCount());
