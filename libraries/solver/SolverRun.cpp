@@ -26,7 +26,10 @@ namespace {
 
 Dictionary readControlDict(const Case& c) {
     const fs::path file = c.systemFile("controlDict");
-    if (!fs::exists(file))
+    std::error_code ec;  // a self-linked file: ELOOP, which fs::exists(file) threw as filesystem_error
+    const bool found = fs::exists(file, ec);
+    if (ec) throw InputError("cannot read " + file.string() + ": " + ec.message());
+    if (!found)
         throw InputError("cannot find " + file.string() + ": is '" + c.root().string() +
                          "' a case directory?");
     return Dictionary::read(file);
@@ -72,12 +75,13 @@ SolverRun::SolverRun(const Arguments& args, std::string application)
     startDirectoryValue_ = start->value;
     lastWritten_ = start->name;  // the start directory is input: never written, not even at the end
     const fs::path particleFile = case_.timeDir(start->name) / "particles.vtp";
-    if (!fs::exists(particleFile)) throw InputError("cannot find " + particleFile.string());
+    std::error_code ec;  // without it a self-linked particles.vtp threw filesystem_error ("internal")
+    if (!fs::exists(particleFile, ec) && !ec) throw InputError("cannot find " + particleFile.string());
     particles_ = std::move(readVtp(particleFile).particles);
     time_->start(start->value, start->name);
     // Read (and so checked) now; changed only in prepareOutputs, once the input is known good.
     pvd_ = std::make_unique<PvdIndex>(PvdIndex::read(case_.root() / "particles.pvd"));
-    if (fs::exists(case_.timeDir(start->name) / "state")) {
+    if (fs::exists(case_.timeDir(start->name) / "state", ec) || ec) {  // an unreadable state: say why below
         state_ = Dictionary::read(case_.timeDir(start->name) / "state");
         time_->restore(*state_);
         Log::info("Restarting from time " + start->name + " (step " + std::to_string(time_->timeIndex()) +
