@@ -27,6 +27,7 @@
 #include "sph/SphSolver.hpp"
 
 #include "core/Log.hpp"
+#include "core/MessageText.hpp"
 #include "core/Parallel.hpp"
 #include "solver/MaterialAssignment.hpp"
 #include "solver/SolverRun.hpp"
@@ -850,7 +851,15 @@ template <int Dim>
 void SphSolver<Dim>::restoreSolverState(const Dictionary& state) {
     started_ = state.getOrDefault<bool>("leapfrogStarted", false);
     const std::string text = state.getOrDefault<std::string>("previousDeltaTExact", "0x0p+0");
-    previousDeltaT_ = std::strtod(text.c_str(), nullptr);
+    // Read whole and checked, as Time reads its own exact reals: strtod alone takes "", "nan", "inf"
+    // and trailing garbage, and a damaged value resumed the leapfrog with a wrong half step.
+    char* end = nullptr;
+    const double value = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !std::isfinite(value) || value < 0)
+        throw state.error("previousDeltaTExact",
+                          "expected an exact finite (hexadecimal) time step >= 0, found '" + excerpt(text) +
+                              "': the state file is damaged; restart from an earlier time");
+    previousDeltaT_ = value;
     // The file carries ρ, P, c, h as written; the half-step state resumes the leapfrog exactly.
 }
 
