@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 #include "core/Parallel.hpp"
+#include "meshfreeOperators/PointText.hpp"
 
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
@@ -18,16 +19,6 @@ namespace {
 constexpr int maxBasis = 10;
 using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, maxBasis, maxBasis>;
 using Column = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, maxBasis, 1>;
-
-template <int Dim>
-std::string describe(const Vector<Dim>& x) {
-    std::ostringstream out;
-    out.precision(9);
-    out << '(';
-    for (int i = 0; i < Dim; ++i) out << (i ? " " : "") << x[i];
-    out << ')';
-    return out.str();
-}
 
 // The basis row p(s) in the layout [1 (value form)] [s_i] [s_i^2 / 2] [s_i s_j, i < j].
 template <int Dim>
@@ -116,7 +107,7 @@ void LeastSquaresOperators<Dim>::rebuild(const std::vector<Vector<Dim>>& points,
     for (std::size_t a = 0; a < n; ++a)
         if (!(scale[a] > 0.0) || !std::isfinite(scale[a]))
             throw Error("LeastSquaresOperators: point " + std::to_string(a) + " at " +
-                        describe<Dim>(points[a]) + " has length scale " + std::to_string(scale[a]) +
+                        pointText<Dim>(points[a]) + " has length scale " + std::to_string(scale[a]) +
                         "; it must be positive");
     for (const auto b : rows.indices())
         if (b >= x.size())
@@ -216,7 +207,7 @@ void LeastSquaresOperators<Dim>::rebuild(const std::vector<Vector<Dim>>& points,
     const auto count =
         std::count_if(status_.begin(), status_.end(), [](Status s) { return s != Status::ok; });
     std::ostringstream msg;
-    msg << "LeastSquaresOperators: point " << a << " at " << describe<Dim>(points[a]) << " has a "
+    msg << "LeastSquaresOperators: point " << a << " at " << pointText<Dim>(points[a]) << " has a "
         << statusName(*it) << " (" << (offsets_[a + 1] - offsets_[a]) << " neighbours, order "
         << options_.order << ", " << m << " basis terms";
     if (count > 1) msg << "; " << count - 1 << " more points fail alike";

@@ -2,6 +2,7 @@
 
 #include "core/Error.hpp"
 #include "core/Parallel.hpp"
+#include "meshfreeOperators/PointText.hpp"
 #include "meshfreeOperators/LeastSquaresOperators.hpp"
 #include "particles/NeighbourSearch.hpp"
 
@@ -60,16 +61,6 @@ bool wellConditioned(const Eigen::Matrix<double, N, N>& m) {
 }
 
 template <int Dim>
-std::string describe(const Vector<Dim>& x) {
-    std::ostringstream out;
-    out.precision(9);
-    out << '(';
-    for (int i = 0; i < Dim; ++i) out << (i ? " " : "") << x[i];
-    out << ')';
-    return out.str();
-}
-
-template <int Dim>
 void throwFirstFailure(const std::vector<unsigned char>& failure, const std::vector<Vector<Dim>>& X,
                        const NeighbourList& list, double h, double support) {
     const auto it = std::find_if(failure.begin(), failure.end(), [](unsigned char f) { return f != none; });
@@ -96,7 +87,7 @@ void throwFirstFailure(const std::vector<unsigned char>& failure, const std::vec
             break;
     }
     std::ostringstream msg;
-    msg << "ReferenceOperators: particle " << a << " at X = " << describe<Dim>(X[a]) << " " << what << " ("
+    msg << "ReferenceOperators: particle " << a << " at X = " << pointText<Dim>(X[a]) << " " << what << " ("
         << list.rowSize(a) << " neighbours within " << support << " = supportRadius(h = " << h << ")";
     if (count > 1) msg << "; " << count - 1 << " more particles fail alike";
     msg << "). Too few neighbours, or all on a line or plane: increase h relative to the particle spacing"
@@ -120,7 +111,7 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
     for (std::size_t a = 0; a < n; ++a)
         if (!(volume_[a] > 0.0) || !std::isfinite(volume_[a]))
             throw Error("ReferenceOperators: particle " + std::to_string(a) +
-                        " at X = " + describe<Dim>(X_[a]) + " has volume " + std::to_string(volume_[a]) +
+                        " at X = " + pointText<Dim>(X_[a]) + " has volume " + std::to_string(volume_[a]) +
                         "; volumes must be positive");
     if (n == 0) return;
 
