@@ -4,17 +4,6 @@
 
 namespace mfdyn {
 
-std::vector<std::string> materialNames(const Dictionary& materialProperties) {
-    const Dictionary& all = materialProperties.subDict("materials");
-    std::vector<std::string> names;
-    for (const auto& entry : all.entries()) {
-        if (!entry->isDict()) throw all.error(entry->key, "expected a material dictionary");
-        names.push_back(entry->key);
-    }
-    if (names.empty()) throw all.error("", "no materials defined");
-    return names;
-}
-
 template <int Dim>
 void assignMaterials(ParticleSet<Dim>& particles, const std::vector<std::string>& names,
                      const Dictionary& materialProperties) {

@@ -10,6 +10,7 @@
 // Anything else is an input error naming the particle, its material or region, and the valid
 // materials. On return `material` holds indices into `names` and particles.materialNames = names.
 #include "core/Dictionary.hpp"
+#include "materials/MaterialSet.hpp"  // materialNames
 #include "particles/ParticleSet.hpp"
 
 #include <string>
@@ -20,9 +21,5 @@ namespace mfdyn {
 template <int Dim>
 void assignMaterials(ParticleSet<Dim>& particles, const std::vector<std::string>& names,
                      const Dictionary& materialProperties);
-
-// The names of the entries of materialProperties' `materials` dictionary, in the order written
-// (each must be a dictionary; an empty list is an error).
-std::vector<std::string> materialNames(const Dictionary& materialProperties);
 
 }  // namespace mfdyn
