@@ -9,7 +9,7 @@
 //     lengthScale 0.01;    // m: Courant number Co = |v| dt / lengthScale
 //
 // Fields: position, velocity, mass (read), acceleration (made). Nothing else is allocated.
-#include "ballistics/BodyForce.hpp"
+#include "solver/BodyForce.hpp"
 #include "solver/Solver.hpp"
 
 namespace mfdyn {

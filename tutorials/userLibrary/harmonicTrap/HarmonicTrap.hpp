@@ -1,7 +1,7 @@
 #pragma once
 // A user model: the body force of an isotropic harmonic trap, added to mfdyn's bodyForce family
 // from outside the toolkit.
-#include <ballistics/BodyForce.hpp>
+#include <solver/BodyForce.hpp>
 
 #include <array>
 

@@ -1,7 +1,9 @@
 #pragma once
-// Body forces per unit mass, a(x, t), for the framework solver particleFlight. A body force may
-// know the exact trajectory it produces, which makes the solver's error measurable
-// (trajectoryError) and lets a user library prove its model end to end.
+// Body forces per unit mass, a(x, t), for any method: a solver that applies one adds a(x, t) to
+// each particle's acceleration (particleFlight integrates it alone). It lives in the shared solver
+// layer so that every method selects gravity or a user's force through the same `bodyForce`
+// sub-dictionary. A body force may know the exact trajectory it produces, which makes a solver's
+// error measurable (trajectoryError) and lets a user library prove its model end to end.
 #include "core/Registry.hpp"
 #include "core/Time.hpp"
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "ballistics/BodyForce.hpp"
+#include "solver/BodyForce.hpp"
 
 #include <array>
 

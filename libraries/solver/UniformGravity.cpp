@@ -5,7 +5,7 @@
 //
 // Velocity Verlet integrates a constant acceleration exactly, so any error the particleFlight
 // solver shows on this force is round-off: the framework case's reference is exact.
-#include "ballistics/UniformGravity.hpp"
+#include "solver/UniformGravity.hpp"
 
 namespace mfdyn {
 

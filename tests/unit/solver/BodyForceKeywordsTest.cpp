@@ -1,7 +1,7 @@
 // The bodyForce family reads through keyword schemas: every registered type declares one, and each
 // required keyword, removed from a valid dictionary, is named in the error.
-#include "ballistics/BodyForce.hpp"
 #include "core/Application.hpp"
+#include "solver/BodyForce.hpp"
 
 #include <gtest/gtest.h>
 
@@ -14,7 +14,7 @@ namespace {
 const std::map<std::string, std::string> samples{{"uniformGravity", "g (0 -9.81 0);"}};
 
 TEST(BodyForceKeywords, EveryTypeDeclaresAKeywordSchema) {
-    loadToolkitLibraries();  // the registrations of libmfdyn_ballistics
+    loadToolkitLibraries();  // the registrations of libmfdyn_solver
     const RegistryFamily* family = RegistryIndex::global().findFamily(BodyForce::familyName);
     ASSERT_NE(family, nullptr);
     for (const auto& type : family->names()) {

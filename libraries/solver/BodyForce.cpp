@@ -1,4 +1,4 @@
-#include "ballistics/BodyForce.hpp"
+#include "solver/BodyForce.hpp"
 
 #include <limits>
 
