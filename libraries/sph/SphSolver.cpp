@@ -213,7 +213,9 @@ template <int Dim>
 void SphSolver<Dim>::addGhosts() {
     nReal_ = x_.size();
     if (!boundaries_.makesGhosts()) return;
-    const double hMax = Reduce::max(nReal_, [&](std::size_t i) { return h_[i]; });
+    // Global: the layer of one rank is seen by the particles of every rank near the plane, so it
+    // must cover the largest support anywhere, and every rank must build it alike.
+    const double hMax = GlobalReduce::max(nReal_, [&](std::size_t i) { return h_[i]; });
     // The layer must cover the kernel's support; mirrorPlane makes it thicknessFactor (3) × the
     // length it is given, so it is given a third of the largest support radius.
     ghosts_ = boundaries_.ghosts(*particles_, v_, kernel_->supportRadius(hMax) / 3.0, time().value());
@@ -680,10 +682,11 @@ TimeStepVote SphSolver<Dim>::stableTimeStep() {
     ensureRates();
     const double xi = time().maxCo();
     const std::size_t n = x_.size();
-    TimeStepVote vote{xi * Reduce::min(n, [&](std::size_t i) { return h_[i] / (v_[i].norm() + c_[i]); }),
-                      "Courant"};
+    // Time-step votes are global: every rank must take the same Δt.
+    TimeStepVote vote{
+        xi * GlobalReduce::min(n, [&](std::size_t i) { return h_[i] / (v_[i].norm() + c_[i]); }), "Courant"};
     if (densityRateLimit_ > 0 && !scheme_->summation()) {
-        const double limit = densityRateLimit_ * Reduce::min(n, [&](std::size_t i) {
+        const double limit = densityRateLimit_ * GlobalReduce::min(n, [&](std::size_t i) {
                                  const double rate = std::abs(drhodt_[i]);
                                  return rate > 0 ? rho_[i] / rate : std::numeric_limits<double>::infinity();
                              });
@@ -838,7 +841,8 @@ template <int Dim>
 std::optional<double> SphSolver<Dim>::internalEnergy() const {
     if (!e_) return std::nullopt;
     const auto& e = *e_;
-    return Reduce::sum<double>(x_.size(), [&](std::size_t i) { return m_[i] * e[i]; });
+    // A conservation sum: added to the global kinetic energy by conservedQuantities.
+    return GlobalReduce::sum<double>(x_.size(), [&](std::size_t i) { return m_[i] * e[i]; });
 }
 
 template <int Dim>
