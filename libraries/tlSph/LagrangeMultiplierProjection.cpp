@@ -306,7 +306,9 @@ void LagrangeMultiplierProjection<Dim>::projectConservingMomentum(
     constexpr int k = rigidModes<Dim>();
     using Phi = Eigen::Matrix<double, Dim, k>;
 
-    const auto first = Reduce::sum<SumArray<1 + Dim>>(n_, [&](std::size_t a) {
+    // The centroid and the rigid-mode Gram matrix are sums over the whole body: global, so that
+    // every rank projects out the same rigid modes.
+    const auto first = GlobalReduce::sum<SumArray<1 + Dim>>(n_, [&](std::size_t a) {
         SumArray<1 + Dim> s;
         s.s[0] = V_[a];
         for (int d = 0; d < Dim; ++d) s.s[1 + d] = V_[a] * xTilde[a][d];
@@ -314,7 +316,7 @@ void LagrangeMultiplierProjection<Dim>::projectConservingMomentum(
     });
     Vector<Dim> centroid;
     for (int d = 0; d < Dim; ++d) centroid[d] = first.s[1 + d] / first.s[0];
-    const auto gram = Reduce::sum<SumArray<k * k>>(n_, [&](std::size_t a) {
+    const auto gram = GlobalReduce::sum<SumArray<k * k>>(n_, [&](std::size_t a) {
         const Phi phi = rigidBasis<Dim>(xTilde[a] - centroid);
         const Eigen::Matrix<double, k, k> g = V_[a] * phi.transpose() * phi;
         SumArray<k * k> s;
@@ -355,10 +357,12 @@ double LagrangeMultiplierProjection<Dim>::residual(const std::vector<Vector<Dim>
     checkSizes(rate, prescribed);
     const auto value = interpolate(rate);
     const std::size_t m = constraints_.size();
-    const double worst = Reduce::max(
+    // A figure of the whole projection (tests and diagnostics compare it): global on every rank.
+    const double worst = GlobalReduce::max(
         m, [&](std::size_t i) { return (constraints_[i].projector * (value[i] - prescribed[i])).norm(); });
-    const double scale = std::max({1.0, Reduce::max(m, [&](std::size_t i) { return prescribed[i].norm(); }),
-                                   Reduce::max(n_, [&](std::size_t a) { return rate[a].norm(); })});
+    const double scale =
+        std::max({1.0, GlobalReduce::max(m, [&](std::size_t i) { return prescribed[i].norm(); }),
+                  GlobalReduce::max(n_, [&](std::size_t a) { return rate[a].norm(); })});
     return m ? worst / scale : 0.0;
 }
 

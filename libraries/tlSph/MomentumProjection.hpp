@@ -11,7 +11,7 @@
 //   lambda_lin = -sum V f / sum V,
 //   [sum V (|x'|^2 I - x' x'^T)] lambda_ang = -sum V x' x f,   x' = x~ - c.
 // In 2D the angular multiplier is the z component only, in 1D there is none. Every sum goes
-// through Reduce::sum, so the result is the same for any thread count (and an MPI build sums
+// through GlobalReduce::sum, so the result is the same for any thread count (and an MPI build sums
 // across ranks there).
 #include "core/Tensor.hpp"
 

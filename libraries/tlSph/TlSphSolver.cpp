@@ -562,7 +562,8 @@ TimeStepVote TlSphSolver<Dim>::stableTimeStep() {
     // part as mu (F^T F)-scaled terms, so the reference wave speed grows like the largest
     // singular value of H (lateral stretch of a compressed direction) or of F. The step follows
     // c_p max_a max(sigma_max(F_a), sigma_max(H_a)), never below the small-strain c_p.
-    const double stretch = Reduce::max(x_.size(), [&](std::size_t i) {
+    // A time-step vote: every rank must step with the same dt, so the stretch is global.
+    const double stretch = GlobalReduce::max(x_.size(), [&](std::size_t i) {
         const Tensor<3> F3 = embed<Dim>((*F_)[i], 1.0);
         const Tensor<3> H3 = cofactor3(i);
         Eigen::SelfAdjointEigenSolver<Tensor<3>> f, h;
@@ -680,7 +681,8 @@ std::optional<double> TlSphSolver<Dim>::internalEnergy() const {
         }
         law.stress(f, false);
     });
-    return Reduce::sum<double>(n, [&](std::size_t i) { return m_[i] / rho0_[i] * w[i]; });
+    // A conservation sum over the whole body (the energy balance of conservedQuantities).
+    return GlobalReduce::sum<double>(n, [&](std::size_t i) { return m_[i] / rho0_[i] * w[i]; });
 }
 
 template <int Dim>
@@ -689,10 +691,11 @@ double TlSphSolver<Dim>::pressureOscillation() const {
     withGhosts(*pressure_, all, GhostMap::vector);
     const auto lap = operators_->laplacianOf(ghostSource_.empty() ? *pressure_ : all);
     const std::size_t n = x_.size();
-    const double num =
-        Reduce::sum<double>(n, [&](std::size_t i) { return V_[i] * std::abs(lap[i]) * spacing_ * spacing_; });
+    // Figures of the whole body for the summary: global sums and maxima (here and below).
+    const double num = GlobalReduce::sum<double>(
+        n, [&](std::size_t i) { return V_[i] * std::abs(lap[i]) * spacing_ * spacing_; });
     const double den =
-        Reduce::sum<double>(n, [&](std::size_t i) { return V_[i] * std::abs((*pressure_)[i]); });
+        GlobalReduce::sum<double>(n, [&](std::size_t i) { return V_[i] * std::abs((*pressure_)[i]); });
     return den > 0 ? num / den : 0.0;
 }
 
@@ -703,7 +706,7 @@ double TlSphSolver<Dim>::compatibilityError() const {
     std::vector<Vector<Dim>> all;
     withGhosts(u, all, GhostMap::vector);
     const auto grad = operators_->gradientOf(ghostSource_.empty() ? u : all);
-    return Reduce::max(u.size(), [&](std::size_t i) {
+    return GlobalReduce::max(u.size(), [&](std::size_t i) {
         return ((*F_)[i] - Tensor<Dim>::Identity() - grad[i]).norm() / std::max(1.0, (*F_)[i].norm());
     });
 }
