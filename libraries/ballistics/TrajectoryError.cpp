@@ -3,6 +3,8 @@
 //
 //   L1 = (1/N) Σ e_a,   L2 = sqrt((1/N) Σ e_a²),   Linf = max e_a        (in m, and m/s)
 //
+// N, the sums and the maximum are over the particles of every rank (GlobalReduce, globalMax).
+//
 // written to errorNorms.csv (time,field,L1,L2,Linf) for fields `position` and `velocity`.
 #include "ballistics/TrajectoryError.hpp"
 
@@ -44,23 +46,27 @@ TrajectoryError::TrajectoryError(const KeywordValues& values, const std::string&
     for (std::size_t i = 0; i < fields.size(); ++i)
         for (int d = 0; d < dim; ++d)
             x0_[i * dim + d] = x.component(i, d), v0_[i * dim + d] = v.component(i, d);
+    // Asked at the origin at rest, not at a particle: every rank must reach the same verdict, and
+    // one without particles (under MPI) would otherwise not ask, not throw, and wait for the others.
+    const double zero[3] = {0, 0, 0};
     double probe[3], probeV[3];
-    if (fields.size() && !solver_.bodyForce().exactTrajectory(x0_.data(), v0_.data(), 0.0, probe, probeV))
+    if (!solver_.bodyForce().exactTrajectory(zero, zero, 0.0, probe, probeV))
         throw values.dict().error("type", "the selected bodyForce has no exact trajectory to compare with");
 }
 
 void TrajectoryError::write() {
     const FieldStore& fields = context().fields();
     const int dim = fields.dimension();
+    // No return on a rank with no particles: the sums below are global, so every rank must reach
+    // them; the row is skipped only when no rank has a particle.
     const std::size_t n = fields.size();
-    if (n == 0) return;
     const FieldBase& x = fields.field("position");
     const FieldBase& v = fields.field("velocity");
     const double tau = context().time().value() - t0_;
     struct Norms {
-        double l1x = 0, l2x = 0, l1v = 0, l2v = 0;
+        double count = 0, l1x = 0, l2x = 0, l1v = 0, l2v = 0;  // count: N over every rank
         Norms& operator+=(const Norms& o) {
-            l1x += o.l1x, l2x += o.l2x, l1v += o.l1v, l2v += o.l2v;
+            count += o.count, l1x += o.l1x, l2x += o.l2x, l1v += o.l1v, l2v += o.l2v;
             return *this;
         }
     };
@@ -74,13 +80,15 @@ void TrajectoryError::write() {
             dv += std::pow(v.component(i, d) - ve[d], 2);
         }
         ex[i] = std::sqrt(dx), ev[i] = std::sqrt(dv);
-        return Norms{ex[i], dx, ev[i], dv};
+        return Norms{1, ex[i], dx, ev[i], dv};
     });
+    if (sums.count == 0) return;  // the same on every rank
     double maxX = 0, maxV = 0;
     for (std::size_t i = 0; i < n; ++i) maxX = std::max(maxX, ex[i]), maxV = std::max(maxV, ev[i]);
+    maxX = globalMax(maxX), maxV = globalMax(maxV);
     const double t = context().time().value();
-    norms_.add(t, "position", sums.l1x / n, std::sqrt(sums.l2x / n), maxX);
-    norms_.add(t, "velocity", sums.l1v / n, std::sqrt(sums.l2v / n), maxV);
+    norms_.add(t, "position", sums.l1x / sums.count, std::sqrt(sums.l2x / sums.count), maxX);
+    norms_.add(t, "velocity", sums.l1v / sums.count, std::sqrt(sums.l2v / sums.count), maxV);
 }
 
 MFDYN_REGISTER(FunctionObject, TrajectoryError, "trajectoryError",

@@ -86,8 +86,9 @@ EllipticalDropError::EllipticalDropError(const KeywordValues& values, const std:
 
 void EllipticalDropError::write() {
     const FieldStore& fields = context().fields();
+    // No return on a rank with no particles: the moments below are global sums every rank must
+    // reach; the row is skipped only when no rank has a particle.
     const std::size_t n = fields.size();
-    if (n == 0) return;
     const double t = context().time().value();
     const FieldBase& position = fields.field("position");
     const FieldBase& mass = fields.field("mass");
@@ -95,25 +96,26 @@ void EllipticalDropError::write() {
     const FieldBase* density = fields.findField("density");
 
     struct Sums {
-        double m = 0, mx = 0, my = 0, mxx = 0, myy = 0;
+        double m = 0, mx = 0, my = 0, mxx = 0, myy = 0, count = 0;
         Sums& operator+=(const Sums& o) {
-            m += o.m, mx += o.mx, my += o.my, mxx += o.mxx, myy += o.myy;
+            m += o.m, mx += o.mx, my += o.my, mxx += o.mxx, myy += o.myy, count += o.count;
             return *this;
         }
     };
-    const Sums first = Reduce::sum<Sums>(n, [&](std::size_t i) {
+    const Sums first = GlobalReduce::sum<Sums>(n, [&](std::size_t i) {
         const double m = mass.component(i, 0), x = position.component(i, 0), y = position.component(i, 1);
-        return Sums{m, m * x, m * y, 0, 0};
+        return Sums{m, m * x, m * y, 0, 0, 1};
     });
+    if (first.count == 0) return;  // the same on every rank
     const double xc = first.mx / first.m, yc = first.my / first.m;
-    const Sums second = Reduce::sum<Sums>(n, [&](std::size_t i) {
+    const Sums second = GlobalReduce::sum<Sums>(n, [&](std::size_t i) {
         const double m = mass.component(i, 0), dx = position.component(i, 0) - xc,
                      dy = position.component(i, 1) - yc;
-        return Sums{0, 0, 0, m * dx * dx, m * dy * dy};
+        return Sums{0, 0, 0, m * dx * dx, m * dy * dy, 0};
     });
     const double a = 2.0 * std::sqrt(second.mxx / first.m), b = 2.0 * std::sqrt(second.myy / first.m);
     if (radius_ == 0) {
-        const double area = Reduce::sum<double>(n, [&](std::size_t i) {
+        const double area = GlobalReduce::sum<double>(n, [&](std::size_t i) {
             return density ? mass.component(i, 0) / density->component(i, 0) : 0.0;
         });
         radius_ = std::sqrt(area / std::numbers::pi);
@@ -128,7 +130,8 @@ void EllipticalDropError::write() {
     norms_.add(t, "b", eb, eb, eb);
     norms_.add(t, "ab", eab, eab, eab);
 
-    // Velocity against v = (−A (x − x_c), A (y − y_c)); the strain rate is scale-free.
+    // Velocity against v = (−A (x − x_c), A (y − y_c)); the strain rate is scale-free. Linf rides
+    // in the sum as a max (+= is the combination; the MPI hook reduces with it).
     struct Norms {
         double w = 0, l1 = 0, l2 = 0, linf = 0;
         Norms& operator+=(const Norms& o) {
@@ -136,7 +139,7 @@ void EllipticalDropError::write() {
             return *this;
         }
     };
-    const Norms e = Reduce::sum<Norms>(n, [&](std::size_t i) {
+    const Norms e = GlobalReduce::sum<Norms>(n, [&](std::size_t i) {
         const double w = density ? mass.component(i, 0) / density->component(i, 0) : mass.component(i, 0);
         const double ex = velocity.component(i, 0) + s.A * (position.component(i, 0) - xc);
         const double ey = velocity.component(i, 1) - s.A * (position.component(i, 1) - yc);

@@ -41,7 +41,7 @@ public:
     void preStep() override { ++preSteps_; }
     TimeStepVote stableTimeStep() override {
         const double vmax =
-            std::sqrt(Reduce::max(v_.size(), [&](std::size_t i) { return v_[i].squaredNorm(); }));
+            std::sqrt(GlobalReduce::max(v_.size(), [&](std::size_t i) { return v_[i].squaredNorm(); }));
         return {vmax > 0 ? time().maxCo() * lengthScale_ / vmax : std::numeric_limits<double>::infinity(),
                 "Courant"};
     }
