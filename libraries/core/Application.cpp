@@ -157,7 +157,7 @@ int runApplication(int argc, char** argv, const ApplicationInfo& info,
             if (auto what = args.find("describe"))
                 std::cout << RegistryIndex::global().describe(*what);
             else
-                std::cout << RegistryIndex::global().listing();
+                std::cout << RegistryIndex::global().listing(info.solver);
             return 0;
         }
         if (args.positional().size() < info.positional.size())

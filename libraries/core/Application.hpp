@@ -29,6 +29,9 @@ struct ApplicationInfo {
     std::vector<ApplicationOption> options;  // beyond the common ones
     std::vector<std::string> positional;     // names of required positional arguments
     bool usesCase = true;                    // accepts -case and loads its controlDict libs for -listModels
+    // A solver application's solver (its name in the registry family "solver"): -listModels
+    // lists its keywords first.
+    std::string solver = {};
 };
 
 class Arguments {

@@ -316,6 +316,15 @@ KeywordSchema& KeywordSchema::example(std::string value) {
     return *this;
 }
 
+KeywordSchema& KeywordSchema::nested(KeywordSchema (*schema)()) {
+    Keyword& k = last("nested");
+    if (k.type != Keyword::Type::dictionary || !schema)
+        throw std::logic_error(family_ + " " + type_ + ": nested schema for the non-dictionary keyword " +
+                               k.name);
+    k.nested = schema;
+    return *this;
+}
+
 KeywordSchema& KeywordSchema::orEnclosing() {
     last("orEnclosing").orEnclosing = true;
     return *this;
@@ -357,6 +366,7 @@ std::string KeywordSchema::summary(const std::string& indent) const {
         if (k.orEnclosing) extra += std::string(extra.empty() ? "" : ", ") + "or in the enclosing dictionary";
         if (!extra.empty()) line += std::string(kindWidth + 2 - k.kindText().size(), ' ') + extra;
         s += line + "\n";
+        if (k.nested) s += k.nested().summary(indent + "    ");
     }
     return s;
 }
@@ -469,9 +479,11 @@ KeywordValues KeywordSchema::read(const Dictionary& dict) const {
             case Keyword::Type::switchValue:
                 v.flag = from.get<bool>(k.name);
                 break;
-            case Keyword::Type::dictionary:
-                from.subDict(k.name);
+            case Keyword::Type::dictionary: {
+                const Dictionary& sub = from.subDict(k.name);
+                if (k.nested) v.nested = std::make_shared<const KeywordValues>(k.nested().read(sub));
                 break;
+            }
             case Keyword::Type::wordList:
                 v.names = from.get<std::vector<std::string>>(k.name);
                 if (v.names.empty())
@@ -548,6 +560,16 @@ const Dictionary& KeywordValues::dictionary(std::string_view name) const {
     if (!v.holder)
         throw std::logic_error(model_ + ": optional dictionary '" + std::string(name) + "' not given");
     return v.holder->subDict(name);
+}
+
+const KeywordValues& KeywordValues::nested(std::string_view name) const {
+    const Value& v = value(name, Keyword::Type::dictionary);
+    if (!v.keyword.nested)
+        throw std::logic_error(model_ + ": dictionary '" + std::string(name) + "' has no nested schema");
+    if (!v.nested)
+        throw std::logic_error(model_ + ": optional dictionary '" + std::string(name) +
+                               "' not given (check given() first)");
+    return *v.nested;
 }
 
 const std::vector<std::string>& KeywordValues::words(std::string_view name) const {

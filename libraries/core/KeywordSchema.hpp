@@ -30,6 +30,7 @@
 // shared by its equation of state and strength law); an entry in the model's own dictionary wins.
 #include "core/Error.hpp"
 
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -38,6 +39,8 @@
 namespace mfdyn {
 
 class Dictionary;
+class KeywordSchema;
+class KeywordValues;
 
 struct KeywordBound {
     double value = 0.0;
@@ -65,6 +68,9 @@ struct Keyword {
     std::string example;                    // a value for documentation excerpts ("(1 0 0)"), when given
     std::optional<KeywordBound> lower, upper;
     bool orEnclosing = false;
+    // A sub-dictionary's own schema (KeywordSchema::nested): read() validates the sub-dictionary
+    // through it when given; listings and mfDoc show its keywords indented under this one.
+    KeywordSchema (*nested)() = nullptr;
 
     // "a real number", "one of cubic | linearUsUp", "a switch (yes/no)", ...
     std::string typeText() const;
@@ -76,8 +82,6 @@ struct Keyword {
     // value inside the bounds.
     std::string sampleValue() const;
 };
-
-class KeywordValues;
 
 // The shortest text that reads back as `value` ("2.65e+08", "0.9", "293.15").
 std::string formatKeywordNumber(double value);
@@ -117,6 +121,12 @@ public:
     // The value a documentation excerpt shows, where the default rule (zeros, the lower bound)
     // would show an invalid one: a plane's normal "(1 0 0)".
     KeywordSchema& example(std::string value);
+    // The schema of the sub-dictionary declared last (a `dictionary` keyword):
+    //     .dictionary("projection", "...").optional().nested(&TlSphSolver<3>::projectionKeywords)
+    // read() reads a given sub-dictionary through it (errors at the sub-dictionary's file and
+    // line, its defaults echoed), and KeywordValues::nested(name) returns those values; an
+    // absent optional sub-dictionary is not read (check given(name) first).
+    KeywordSchema& nested(KeywordSchema (*schema)());
 
     // The keywords of `other` (a base model's), after those declared so far.
     KeywordSchema& append(const KeywordSchema& other);
@@ -154,6 +164,9 @@ public:
     bool flag(std::string_view name) const;
     const std::vector<double>& vector(std::string_view name) const;
     const Dictionary& dictionary(std::string_view name) const;
+    // The values of a sub-dictionary declared with a nested schema; std::logic_error when it has
+    // none or the sub-dictionary was not given.
+    const KeywordValues& nested(std::string_view name) const;
     const std::vector<std::string>& words(std::string_view name) const;  // empty when not given
     // True when the keyword was given (in the model's or, for orEnclosing, the enclosing dictionary).
     bool given(std::string_view name) const;
@@ -175,6 +188,7 @@ private:
         std::string text;
         std::vector<double> list;
         std::vector<std::string> names;
+        std::shared_ptr<const KeywordValues> nested;  // the sub-dictionary's values (Keyword::nested)
     };
     const Value& value(std::string_view name, Keyword::Type type) const;
 

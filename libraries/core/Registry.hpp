@@ -19,6 +19,18 @@
 // file of the model (__FILE__, relative to the source tree) for the generated docs (mfDoc). A
 // model that declares `static KeywordSchema keywords()` (core/KeywordSchema.hpp) registers it
 // with the same line: -listModels, -describe and mfDoc show its keywords.
+//
+// A family that belongs to one method declares its method next to its name:
+//
+//     static constexpr const char* familyName = "dissipation";
+//     static constexpr const char* methodName = "tlSph";
+//
+// The index keys families by (method, name), so tlSph's dissipation and impactSph's dissipation
+// are two families a user writes as `dissipation { type ...; }` in either properties dictionary,
+// with no prefix. Listings and messages name a scoped family "dissipation (tlSph)";
+// `-describe dissipation` shows every family of that name, `-describe tlSph/dissipation` one, and
+// `-describe tlSph/dissipation/jst` one type of it. A family without methodName is shared by
+// every method, as before.
 #include "core/Dictionary.hpp"
 #include "core/KeywordSchema.hpp"
 
@@ -46,12 +58,22 @@ struct RegistryItem {
     KeywordSchema (*keywords)() = nullptr;
     // 1, 2 or 3 for a family templated on the dimension (one item per dimension), else 0.
     int dimension = 0;
+    // A solver's properties dictionary ("sphProperties", read from constant/), when it names it
+    // (solver/SolverRegistry.hpp); empty for models, which are read from a sub-dictionary.
+    std::string dictionary;
 };
 
 struct RegistryFamily {
     std::string name;
+    std::string method;               // the methodName of a method-scoped family; empty for a shared one
     std::vector<RegistryItem> items;  // sorted by name
     std::vector<std::string> conflicts;
+
+    // "dissipation (tlSph)" for a scoped family, "equationOfState" for a shared one: what listings
+    // and messages call it.
+    std::string title() const;
+    // "tlSph/dissipation" or "equationOfState": how -describe names it, and mfDoc's directory.
+    std::string key() const;
 
     const RegistryItem* find(std::string_view type, std::string_view signature = {}) const;
     // Type names, each once, sorted.
@@ -65,19 +87,25 @@ struct RegistryFamily {
 class RegistryIndex {
 public:
     static RegistryIndex& global();
-    RegistryFamily& family(std::string_view name);
-    const RegistryFamily* findFamily(std::string_view name) const;
+    // The family (method, name), made empty when first asked for; method "" is a shared family.
+    RegistryFamily& family(std::string_view name, std::string_view method = {});
+    const RegistryFamily* findFamily(std::string_view name, std::string_view method = {}) const;
+    // Every family called `name`, whatever its method (shared first, then by method).
+    std::vector<const RegistryFamily*> familiesNamed(std::string_view name) const;
+    // Sorted by name, then method (a shared family before the scoped ones of its name).
     std::vector<const RegistryFamily*> families() const;
-    void add(std::string_view family, RegistryItem item);
+    void add(std::string_view family, RegistryItem item, std::string_view method = {});
     // Throws Error naming both libraries if any name was registered twice.
     void checkConflicts() const;
     // Text for -listModels: every family and its types with descriptions, and the keywords of
-    // each type that declares a schema (name, unit, required or default, bounds or words).
-    std::string listing() const;
-    // Text for -describe <what>: `what` is a family ("equationOfState": its listing), a type
-    // ("mieGruneisen", or "equationOfState/mieGruneisen" where a name is in several families: the
-    // description, source file, library, dimensions and every keyword with its meaning).
-    // Throws InputError listing the families when nothing matches.
+    // each type that declares a schema (name, unit, required or default, bounds or words). With
+    // `solver` (the application's own, in the family "solver"), that solver's keywords come first.
+    std::string listing(std::string_view solver = {}) const;
+    // Text for -describe <what>: `what` is a family ("equationOfState": its listing; "dissipation":
+    // the listing of every family of that name; "tlSph/dissipation": one scoped family), a type
+    // ("mieGruneisen", or "equationOfState/mieGruneisen" where a name is in several families, or
+    // "tlSph/dissipation/jst": the description, source file, library, dimensions and every keyword
+    // with its meaning). Throws InputError listing the families when nothing matches.
     std::string describe(std::string_view what) const;
 
 private:
@@ -89,6 +117,22 @@ std::string sourceFileRelative(const char* file);
 
 // The shared object holding `address` ("libmfdyn_core.so", "libmyModels.so", or the program).
 std::string sharedObjectOf(const void* address);
+
+// The methodName of a family base, or "" when it declares none (a family shared by all methods).
+template <class Base>
+constexpr const char* methodNameOf() {
+    if constexpr (requires { Base::methodName; })
+        return Base::methodName;
+    else
+        return "";
+}
+
+// What listings and messages call the family of Base: "dissipation (tlSph)" or "equationOfState".
+template <class Base>
+std::string familyTitle() {
+    const std::string method = methodNameOf<Base>();
+    return std::string(Base::familyName) + (method.empty() ? "" : " (" + method + ")");
+}
 
 template <class Base, class... Args>
 class Registry {
@@ -102,7 +146,8 @@ public:
             Base::familyName,
             RegistryItem{name, description, sharedObjectOf(registrant),
                          std::make_shared<const Factory>(std::move(make)), typeid(Factory).name(),
-                         sourceFileRelative(sourceFile), keywords, dimension});
+                         sourceFileRelative(sourceFile), keywords, dimension},
+            methodNameOf<Base>());
     }
 
     // Select by the `type` entry of `dict`, which is passed on as the first constructor argument
@@ -110,7 +155,8 @@ public:
     template <class... Rest>
     static std::unique_ptr<Base> New(const Dictionary& dict, Rest&&... rest) {
         if (!dict.found("type")) {
-            const RegistryFamily& fam = RegistryIndex::global().family(Base::familyName);
+            const RegistryFamily& fam =
+                RegistryIndex::global().family(Base::familyName, methodNameOf<Base>());
             throw InputError(dict.where(), dict.scope(), "missing keyword 'type'" + fam.validTypes());
         }
         return NewOfType(dict.get<std::string>("type"), dict, dict, std::forward<Rest>(rest)...);
@@ -119,7 +165,7 @@ public:
     // Select by an explicit type name; `context` locates the error message.
     static std::unique_ptr<Base> NewOfType(const std::string& type, const Dictionary& context, Args... args) {
         RegistryIndex::global().checkConflicts();
-        const RegistryFamily& fam = RegistryIndex::global().family(Base::familyName);
+        const RegistryFamily& fam = RegistryIndex::global().family(Base::familyName, methodNameOf<Base>());
         const RegistryItem* item = fam.find(type, typeid(Factory).name());
         if (!item) {
             if (context.found("type")) throw context.error("type", fam.unknownTypeMessage(type));
@@ -129,7 +175,7 @@ public:
     }
 
     static std::vector<std::string> names() {
-        return RegistryIndex::global().family(Base::familyName).names();
+        return RegistryIndex::global().family(Base::familyName, methodNameOf<Base>()).names();
     }
 };
 

@@ -1,5 +1,7 @@
 // mfDoc: writes the model reference doc/models/<family>/<type>.md for every type registered by the
-// toolkit's libraries, and doc/models/README.md indexing them (STYLE.md convention 11). Each page
+// toolkit's libraries (doc/models/<method>/<family>/<type>.md for a family scoped to one method,
+// core/Registry.hpp), doc/models/solver/<name>.md for every registered solver
+// (solver/SolverRegistry.hpp), and doc/models/README.md indexing them (STYLE.md convention 11). Each page
 // has the fixed sections Syntax, Keywords (both from the keyword schema), Equations and source
 // (the opening comment of the model's .cpp, verbatim), Restrictions, Related and Example (the
 // tutorials whose dictionaries select the type). With -compare the pages are also compared with a
@@ -71,9 +73,10 @@ std::string enclosingName(const std::string& text, std::size_t pos) {
 }
 
 struct TutorialUse {
-    std::string caseDir;  // tutorials/impactSph/taylorBar
-    std::string file;     // constant/materialProperties
-    std::string scope;    // the dictionary holding `type`
+    std::string application;  // impactSph: the tutorials/<application>/ folder it is in
+    std::string caseDir;      // tutorials/impactSph/taylorBar
+    std::string file;         // constant/materialProperties
+    std::string scope;        // the dictionary holding `type`
 };
 
 // Every `type <name>;` in the constant/ and system/ files of every tutorial case.
@@ -130,8 +133,10 @@ std::map<std::string, std::vector<TutorialUse>> scanTutorials(const fs::path& so
             std::size_t semi = end;
             while (semi < text.size() && std::isspace(static_cast<unsigned char>(text[semi]))) ++semi;
             if (end == i || semi >= text.size() || text[semi] != ';') continue;
+            const auto part = ++caseDir.begin();
+            const std::string application = part == caseDir.end() ? std::string() : part->string();
             uses[text.substr(i, end - i)].push_back(
-                {caseDir.generic_string(), inCase.generic_string(), enclosingName(text, pos)});
+                {application, caseDir.generic_string(), inCase.generic_string(), enclosingName(text, pos)});
         }
     }
     return uses;
@@ -141,6 +146,50 @@ std::string markdownCell(std::string text) {
     std::string out;
     for (char c : text) out += c == '|' ? std::string("\\|") : std::string(1, c);
     return out;
+}
+
+// The dictionary excerpt of `schema`, each entry at `indent`, a nested sub-dictionary's keywords
+// in braces below its name; `firstKey`/`firstValue` is an entry before them (a model's `type`).
+void syntaxLines(std::ostream& s, const KeywordSchema& schema, const std::string& indent,
+                 const std::string& firstKey = {}, const std::string& firstValue = {}) {
+    std::size_t width = std::max<std::size_t>(4, firstKey.size());
+    for (const Keyword& k : schema.keywords()) width = std::max(width, k.name.size());
+    auto entry = [&](const std::string& key, const std::string& value, const std::string& comment,
+                     bool commented) {
+        std::string line =
+            indent + (commented ? "// " : "") + key + std::string(width + 2 - key.size(), ' ') + value + ";";
+        if (!comment.empty())
+            line += std::string(line.size() < 40 ? 40 - line.size() : 1, ' ') + "// " + comment;
+        s << line << "\n";
+    };
+    if (!firstKey.empty()) entry(firstKey, firstValue, "", false);
+    for (const Keyword& k : schema.keywords()) {
+        std::string comment = k.unit == "-" ? std::string() : k.unit + ", ";
+        comment += k.kind == Keyword::Kind::required ? "required" : k.kindText();
+        if (k.orEnclosing) comment += " (here or in the enclosing dictionary)";
+        if (k.nested) {
+            std::string head = indent + k.name;
+            s << head << std::string(head.size() < 40 ? 40 - head.size() : 1, ' ') << "// " << comment << "\n"
+              << indent << "{\n";
+            syntaxLines(s, k.nested(), indent + "    ");
+            s << indent << "}\n";
+            continue;
+        }
+        entry(k.name, k.sampleValue(), comment, k.kind == Keyword::Kind::optional);
+    }
+}
+
+// The rows of the keyword table; a nested sub-dictionary's keywords follow it as `name/keyword`.
+void keywordRows(std::ostream& s, const KeywordSchema& schema, const std::string& prefix) {
+    for (const Keyword& k : schema.keywords()) {
+        std::string value = k.typeText();
+        if (const std::string b = k.boundsText(); !b.empty()) value += ", " + b;
+        std::string kind = k.kindText();
+        if (k.orEnclosing) kind += "; here or in the enclosing dictionary";
+        s << "| `" << prefix << k.name << "` | " << markdownCell(k.unit) << " | " << markdownCell(kind)
+          << " | " << markdownCell(value) << " | " << markdownCell(k.meaning) << " |\n";
+        if (k.nested) keywordRows(s, k.nested(), prefix + k.name + "/");
+    }
 }
 
 struct TypeDoc {
@@ -154,38 +203,24 @@ std::string page(const TypeDoc& doc, const std::vector<std::string>& related, co
                  const std::map<std::string, int>& familiesOfName) {
     const RegistryFamily& fam = *doc.family;
     const RegistryItem& item = *doc.item;
-    const std::string toRoot = "../../../";
+    // A scoped family's pages are one folder deeper (doc/models/<method>/<family>/).
+    const std::string up = fam.method.empty() ? "" : "../";
+    const std::string toRoot = up + "../../../";
     std::ostringstream s;
-    s << generatedNote << "\n# " << fam.name << " `" << item.name << "`\n\n" << item.description << "\n\n";
+    s << generatedNote << "\n# " << fam.title() << " `" << item.name << "`\n\n" << item.description << "\n\n";
     if (!item.sourceFile.empty())
         s << "Source: [" << item.sourceFile << "](" << toRoot << item.sourceFile << "), library `"
           << item.library << "`.\n\n";
 
     // Syntax
     s << "## Syntax\n\n```\n" << fam.name << "\n{\n";
-    std::size_t width = 4;
     KeywordSchema schema;
     if (item.keywords) schema = item.keywords();
-    for (const Keyword& k : schema.keywords()) width = std::max(width, k.name.size());
-    auto entry = [&](const std::string& key, const std::string& value, const std::string& comment,
-                     bool commented) {
-        std::string line = std::string(commented ? "    // " : "    ") + key +
-                           std::string(width + 2 - key.size(), ' ') + value + ";";
-        if (!comment.empty())
-            line += std::string(line.size() < 40 ? 40 - line.size() : 1, ' ') + "// " + comment;
-        s << line << "\n";
-    };
-    entry("type", item.name, "", false);
-    if (item.keywords) {
-        for (const Keyword& k : schema.keywords()) {
-            std::string comment = k.unit == "-" ? std::string() : k.unit + ", ";
-            comment += k.kind == Keyword::Kind::required ? "required" : k.kindText();
-            if (k.orEnclosing) comment += " (here or in the enclosing dictionary)";
-            entry(k.name, k.sampleValue(), comment, k.kind == Keyword::Kind::optional);
-        }
-    } else {
-        s << "    ...                                 // see Equations and source\n";
-    }
+    if (item.keywords)
+        syntaxLines(s, schema, "    ", "type", item.name);
+    else
+        s << "    type" << std::string(2, ' ') << item.name << ";\n"
+          << "    ...                                 // see Equations and source\n";
     s << "}\n```\n\n";
 
     // Keywords
@@ -195,15 +230,8 @@ std::string page(const TypeDoc& doc, const std::vector<std::string>& related, co
              "opening comment of its source file (Equations and source, below).\n\n";
     } else {
         s << "| keyword | unit | kind | value | meaning |\n|---|---|---|---|---|\n";
-        s << "| `type` | - | required | `" << item.name << "` | selects this " << fam.name << " type |\n";
-        for (const Keyword& k : schema.keywords()) {
-            std::string value = k.typeText();
-            if (const std::string b = k.boundsText(); !b.empty()) value += ", " + b;
-            std::string kind = k.kindText();
-            if (k.orEnclosing) kind += "; here or in the enclosing dictionary";
-            s << "| `" << k.name << "` | " << markdownCell(k.unit) << " | " << markdownCell(kind) << " | "
-              << markdownCell(value) << " | " << markdownCell(k.meaning) << " |\n";
-        }
+        s << "| `type` | - | required | `" << item.name << "` | selects this " << fam.title() << " type |\n";
+        keywordRows(s, schema, "");
         s << "\n";
     }
 
@@ -235,24 +263,27 @@ std::string page(const TypeDoc& doc, const std::vector<std::string>& related, co
                  "enclosing "
                  "dictionary (a material's constants); an entry in this dictionary wins.\n";
     }
-    s << "- Selected by `type " << item.name << ";` in the " << fam.name << " dictionary; provided by `"
-      << item.library << "`.\n\n";
+    s << "- Selected by `type " << item.name << ";` in the " << fam.name << " dictionary";
+    if (!fam.method.empty()) s << " of a " << fam.method << " case (constant/" << fam.method << "Properties)";
+    s << "; provided by `" << item.library << "`.\n\n";
 
     // Related
     s << "## Related\n\n";
     std::string others;
     for (const auto& name : related)
         if (name != item.name) others += (others.empty() ? "" : ", ") + ("[" + name + "](" + name + ".md)");
-    s << (others.empty() ? "No other " + fam.name + " types."
-                         : "Other " + fam.name + " types: " + others + ".")
-      << " All families: [doc/models](../README.md).\n\n";
+    s << (others.empty() ? "No other " + fam.title() + " types."
+                         : "Other " + fam.title() + " types: " + others + ".")
+      << " All families: [doc/models](" << up << "../README.md).\n\n";
 
     // Example
     s << "## Example\n\n";
     std::map<std::string, std::set<std::string>> cases;
     if (auto it = tutorials.find(item.name); it != tutorials.end())
         for (const TutorialUse& use : it->second) {
-            // A name registered in several families counts only inside a dictionary named after the family.
+            // A scoped family's types count only in its method's tutorials; a name registered in
+            // several families counts only inside a dictionary named after the family.
+            if (!fam.method.empty() && use.application != fam.method) continue;
             const bool unique = familiesOfName.at(item.name) == 1;
             if (unique || use.scope == fam.name) cases[use.caseDir].insert(use.file);
         }
@@ -266,6 +297,78 @@ std::string page(const TypeDoc& doc, const std::vector<std::string>& related, co
             const bool readme = fs::exists(source / dir / "README.md");
             s << "- [" << dir << "](" << toRoot << dir << (readme ? "/README.md" : "") << ")\n";
         }
+    }
+    return s.str();
+}
+
+// doc/models/solver/<name>.md: a solver's page, from its registration (solver/SolverRegistry.hpp):
+// its properties dictionary's keywords, the families that belong to its method, its source's
+// opening comment and the tutorials that run it (tutorials/<name>/).
+std::string solverPage(const RegistryItem& item, const std::vector<const RegistryFamily*>& methodFamilies,
+                       const fs::path& source) {
+    const std::string toRoot = "../../../";
+    const std::string file = item.dictionary.empty() ? std::string() : "constant/" + item.dictionary;
+    std::ostringstream s;
+    s << generatedNote << "\n# solver `" << item.name << "`\n\n" << item.description << "\n\n";
+    s << "Run by the application `" << item.name << "`";
+    if (!item.sourceFile.empty())
+        s << "; source: [" << item.sourceFile << "](" << toRoot << item.sourceFile << "), library `"
+          << item.library << "`";
+    s << ".\n\n";
+
+    KeywordSchema schema;
+    if (item.keywords) schema = item.keywords();
+    s << "## Syntax\n\n";
+    if (!item.keywords) {
+        s << "The solver's keyword schema is not yet declared; see its source file.\n\n";
+    } else {
+        s << "```\n// " << (file.empty() ? "its properties dictionary" : file) << "\n";
+        syntaxLines(s, schema, "");
+        s << "```\n\n";
+        s << "## Keywords\n\n| keyword | unit | kind | value | meaning |\n|---|---|---|---|---|\n";
+        keywordRows(s, schema, "");
+        s << "\n";
+    }
+
+    s << "## Families of this method\n\n";
+    if (methodFamilies.empty()) {
+        s << "None: every family this solver selects from is shared ([doc/models](../README.md)).\n\n";
+    } else {
+        s << "Selected by `type` in a sub-dictionary of the solver's dictionary; the same family names in "
+             "another method's dictionary are that method's.\n\n";
+        for (const RegistryFamily* fam : methodFamilies) {
+            std::string types;
+            for (const std::string& name : fam->names())
+                types +=
+                    (types.empty() ? "" : ", ") + ("[" + name + "](../" + fam->key() + "/" + name + ".md)");
+            s << "- `" << fam->name << "`: " << types << "\n";
+        }
+        s << "\n";
+    }
+
+    s << "## Equations and source\n\n";
+    const std::string comment =
+        item.sourceFile.empty() ? std::string() : openingComment(readFile(source / item.sourceFile));
+    if (comment.empty())
+        s << "The source file does not open with a comment block.\n\n";
+    else
+        s << "From the opening comment of `" << item.sourceFile << "`:\n\n```\n" << comment << "```\n\n";
+
+    s << "## Example\n\n";
+    std::vector<std::string> cases;
+    std::error_code ec;
+    const fs::path dir = source / "tutorials" / item.name;
+    for (const auto& entry : fs::directory_iterator(dir, ec))
+        if (entry.is_directory() && fs::exists(entry.path() / "Allrun"))
+            cases.push_back(entry.path().lexically_relative(source).generic_string());
+    std::sort(cases.begin(), cases.end());
+    if (cases.empty()) {
+        s << "No tutorial runs this solver yet.\n";
+    } else {
+        s << "Tutorials run by `" << item.name << "`:\n\n";
+        for (const std::string& c : cases)
+            s << "- [" << c << "](" << toRoot << c
+              << (fs::exists(source / c / "README.md") ? "/README.md" : "") << ")\n";
     }
     return s.str();
 }
@@ -316,13 +419,33 @@ int main(int argc, char** argv) {
                "selects "
                "one. Each page gives the dictionary syntax, the keywords (from the model's keyword schema), "
                "the equations and their source, restrictions, related types and the tutorials that use it. "
-               "`<solver> -listModels` and `<solver> -describe <type>` print the same from the code.\n\n";
+               "`<solver> -listModels` and `<solver> -describe <type>` print the same from the code. A "
+               "family "
+               "that belongs to one method (\"dissipation (tlSph)\") has its pages under "
+               "`<method>/<family>/`; `-describe <method>/<family>` prints it.\n\n";
+        // The solvers first: a user starts from the method, then picks its models.
         for (const auto& [fam, docs] : families) {
+            if (fam->name != "solver" || !fam->method.empty()) continue;
+            index << "## Solvers\n\n| solver | description | dictionary |\n|---|---|---|\n";
+            for (const TypeDoc& d : docs) {
+                std::vector<const RegistryFamily*> own;
+                for (const auto& other : families)
+                    if (other.first->method == d.item->name) own.push_back(other.first);
+                const std::string path = "solver/" + d.item->name + ".md";
+                pages[path] = solverPage(*d.item, own, source);
+                index << "| [" << d.item->name << "](" << path << ") | " << markdownCell(d.item->description)
+                      << " | " << (d.item->dictionary.empty() ? "" : "`constant/" + d.item->dictionary + "`")
+                      << " |\n";
+            }
+            index << "\n";
+        }
+        for (const auto& [fam, docs] : families) {
+            if (fam->name == "solver" && fam->method.empty()) continue;
             std::vector<std::string> names;
             for (const TypeDoc& d : docs) names.push_back(d.item->name);
-            index << "## " << fam->name << "\n\n| type | description | keywords |\n|---|---|---|\n";
+            index << "## " << fam->title() << "\n\n| type | description | keywords |\n|---|---|---|\n";
             for (const TypeDoc& d : docs) {
-                const std::string path = fam->name + "/" + d.item->name + ".md";
+                const std::string path = fam->key() + "/" + d.item->name + ".md";
                 pages[path] = page(d, names, source, tutorials, familiesOfName);
                 index << "| [" << d.item->name << "](" << path << ") | " << markdownCell(d.item->description)
                       << " | " << (d.item->keywords ? "schema" : "not yet declared") << " |\n";

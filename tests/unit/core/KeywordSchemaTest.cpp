@@ -349,3 +349,70 @@ TEST(KeywordSchema, WrongWordIsQuotedShort) {
     EXPECT_TRUE(contains(what, "expected one of linear | cubic, found 'xxx")) << what;
     EXPECT_LT(what.size(), 300u) << what;
 }
+
+namespace {
+
+KeywordSchema projectionSchema() {
+    return KeywordSchema("solverForTest", "projection")
+        .scalar("tolerance", "-", "relative residual to stop at")
+        .greaterThan(0)
+        .orDefault(1e-10)
+        .integer("maxIterations", "-", "iterations at most")
+        .atLeast(1);
+}
+
+KeywordSchema solverSchema() {
+    return KeywordSchema("solver", "solverForTest")
+        .scalar("cfl", "-", "Courant number")
+        .greaterThan(0)
+        .dictionary("projection", "the projection's settings")
+        .optional()
+        .nested(&projectionSchema);
+}
+
+}  // namespace
+
+TEST(KeywordSchema, NestedSchemaValidatesAGivenSubDictionaryAtItsLine) {
+    // Given: read through the nested schema, values and defaults available from the same read.
+    const Dictionary good =
+        Dictionary::parse("cfl 0.5;\nprojection\n{\n    maxIterations 20;\n}\n", "solverDict");
+    testing::internal::CaptureStdout();
+    const KeywordValues v = solverSchema().read(good);
+    const std::string log = testing::internal::GetCapturedStdout();
+    EXPECT_TRUE(v.given("projection"));
+    EXPECT_EQ(v.nested("projection").integer("maxIterations"), 20);
+    EXPECT_EQ(v.nested("projection").scalar("tolerance"), 1e-10);
+    EXPECT_TRUE(contains(log, "tolerance 1e-10 (default)")) << log;
+
+    // A bad value inside: the error is at the sub-dictionary's line and names the keyword.
+    const Dictionary bad =
+        Dictionary::parse("cfl 0.5;\nprojection\n{\n    maxIterations 0;\n}\n", "solverDict");
+    const std::string message = messageOf([&] { solverSchema().read(bad); });
+    EXPECT_TRUE(contains(message, "solverDict:4")) << message;
+    EXPECT_TRUE(contains(message, "maxIterations")) << message;
+    EXPECT_TRUE(contains(message, ">= 1")) << message;
+
+    // A missing required keyword inside names the nested schema.
+    const Dictionary missing = Dictionary::parse("cfl 0.5;\nprojection { }\n", "solverDict");
+    EXPECT_TRUE(
+        contains(messageOf([&] { solverSchema().read(missing); }), "missing keyword 'maxIterations'"));
+
+    // Absent and optional: not read, and asking for its values is a programming error.
+    const Dictionary absent = Dictionary::parse("cfl 0.5;", "solverDict");
+    const KeywordValues none = solverSchema().read(absent);
+    EXPECT_FALSE(none.given("projection"));
+    EXPECT_THROW((void)none.nested("projection"), std::logic_error);
+    EXPECT_THROW((void)none.nested("cfl"), std::logic_error);
+    // Only a dictionary keyword takes a nested schema.
+    EXPECT_THROW(KeywordSchema("f", "t").scalar("x", "-", "x").nested(&projectionSchema), std::logic_error);
+}
+
+TEST(KeywordSchema, NestedKeywordsAreListedIndentedUnderTheirDictionary) {
+    const std::string summary = solverSchema().summary("  ");
+    const auto dict = summary.find("  projection");
+    const auto inner = summary.find("      tolerance");
+    EXPECT_NE(dict, std::string::npos) << summary;
+    EXPECT_NE(inner, std::string::npos) << summary;
+    EXPECT_LT(dict, inner) << summary;
+    EXPECT_NE(summary.find("      maxIterations"), std::string::npos) << summary;
+}

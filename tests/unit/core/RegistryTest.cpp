@@ -117,3 +117,135 @@ TEST(Registry, DimensionTemplatedFamilyHasOneNameAndAnInstancePerDimension) {
     const auto first = listing.find("a family templated on the dimension");
     EXPECT_EQ(listing.find("a family templated on the dimension", first + 1), std::string::npos) << listing;
 }
+
+namespace {
+
+// Two families of one name in two methods (contract: a family base may declare methodName), each
+// with a type "shared" of the same name and one type of its own.
+struct SmootherA {
+    static constexpr const char* familyName = "smootherForTest";
+    static constexpr const char* methodName = "methodA";
+    using Selector = Registry<SmootherA, const Dictionary&>;
+    explicit SmootherA(const Dictionary&) {}
+    virtual ~SmootherA() = default;
+    virtual std::string who() const = 0;
+};
+struct SmootherB {
+    static constexpr const char* familyName = "smootherForTest";
+    static constexpr const char* methodName = "methodB";
+    using Selector = Registry<SmootherB, const Dictionary&>;
+    explicit SmootherB(const Dictionary&) {}
+    virtual ~SmootherB() = default;
+    virtual std::string who() const = 0;
+};
+struct SharedA final : SmootherA {
+    using SmootherA::SmootherA;
+    std::string who() const override { return "A shared"; }
+};
+struct OnlyA final : SmootherA {
+    using SmootherA::SmootherA;
+    std::string who() const override { return "A only"; }
+};
+struct SharedB final : SmootherB {
+    using SmootherB::SmootherB;
+    std::string who() const override { return "B shared"; }
+};
+struct OnlyB final : SmootherB {
+    using SmootherB::SmootherB;
+    std::string who() const override { return "B only"; }
+};
+
+MFDYN_REGISTER(SmootherA, SharedA, "shared", "method A's shared-name smoother");
+MFDYN_REGISTER(SmootherA, OnlyA, "onlyInA", "method A's own smoother");
+MFDYN_REGISTER(SmootherB, SharedB, "shared", "method B's shared-name smoother");
+MFDYN_REGISTER(SmootherB, OnlyB, "onlyInB", "method B's own smoother");
+
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+}  // namespace
+
+TEST(Registry, MethodScopedFamiliesOfOneNameAreDistinct) {
+    // The same type name in both methods is no clash, and each method selects its own class.
+    RegistryIndex::global().checkConflicts();
+    const Dictionary dict = Dictionary::parse("type shared;", "dict");
+    EXPECT_EQ(SmootherA::Selector::New(dict)->who(), "A shared");
+    EXPECT_EQ(SmootherB::Selector::New(dict)->who(), "B shared");
+    EXPECT_EQ(SmootherA::Selector::names(), (std::vector<std::string>{"onlyInA", "shared"}));
+    EXPECT_EQ(SmootherB::Selector::names(), (std::vector<std::string>{"onlyInB", "shared"}));
+    EXPECT_EQ(familyTitle<SmootherA>(), "smootherForTest (methodA)");
+    EXPECT_EQ(familyTitle<Greeter>(), "greeterForTest");  // a family without methodName is unchanged
+    ASSERT_NE(RegistryIndex::global().findFamily("smootherForTest", "methodB"), nullptr);
+    EXPECT_EQ(RegistryIndex::global().findFamily("smootherForTest"), nullptr);  // no shared one
+    EXPECT_EQ(RegistryIndex::global().familiesNamed("smootherForTest").size(), 2u);
+}
+
+TEST(Registry, UnknownTypeOfAScopedFamilyNamesItAndListsOnlyItsTypes) {
+    // Method B's type in method A's dictionary: the message says which family was searched, and
+    // does not offer B's types, which A cannot select.
+    const Dictionary dict = Dictionary::parse("\ntype onlyInB;", "aProperties");
+    try {
+        SmootherA::Selector::New(dict);
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        const std::string what = e.what();
+        EXPECT_TRUE(contains(what, "aProperties:2:1")) << what;
+        EXPECT_TRUE(contains(what, "unknown smootherForTest (methodA) type 'onlyInB'")) << what;
+        EXPECT_TRUE(contains(what, "valid smootherForTest (methodA) types:")) << what;
+        EXPECT_TRUE(contains(what, "onlyInA")) << what;
+        EXPECT_FALSE(contains(what, "onlyInB  (")) << what;
+    }
+}
+
+TEST(Registry, ListingAndDescribeNameScopedFamilies) {
+    const RegistryIndex& index = RegistryIndex::global();
+    const std::string listing = index.listing();
+    EXPECT_TRUE(contains(listing, "\nsmootherForTest (methodA)\n")) << listing;
+    EXPECT_TRUE(contains(listing, "\nsmootherForTest (methodB)\n")) << listing;
+    EXPECT_LT(listing.find("smootherForTest (methodA)"), listing.find("smootherForTest (methodB)"));
+
+    // The bare name lists both families.
+    const std::string both = index.describe("smootherForTest");
+    EXPECT_TRUE(contains(both, "smootherForTest (methodA)\n")) << both;
+    EXPECT_TRUE(contains(both, "smootherForTest (methodB)\n")) << both;
+    EXPECT_TRUE(contains(both, "onlyInA") && contains(both, "onlyInB")) << both;
+
+    // method/family lists one.
+    const std::string onlyB = index.describe("methodB/smootherForTest");
+    EXPECT_TRUE(contains(onlyB, "smootherForTest (methodB)\n")) << onlyB;
+    EXPECT_FALSE(contains(onlyB, "onlyInA")) << onlyB;
+
+    // family/type gives the type of every family of that name; method/family/type one of them.
+    const std::string sharedBoth = index.describe("smootherForTest/shared");
+    EXPECT_TRUE(contains(sharedBoth, "smootherForTest (methodA) shared: method A's")) << sharedBoth;
+    EXPECT_TRUE(contains(sharedBoth, "smootherForTest (methodB) shared: method B's")) << sharedBoth;
+    const std::string sharedA = index.describe("methodA/smootherForTest/shared");
+    EXPECT_TRUE(contains(sharedA, "smootherForTest (methodA) shared")) << sharedA;
+    EXPECT_FALSE(contains(sharedA, "method B's")) << sharedA;
+
+    // A wrong method names the families, scoped ones by their key.
+    try {
+        (void)index.describe("methodC/smootherForTest/shared");
+        FAIL() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_TRUE(contains(e.what(), "families:")) << e.what();
+        EXPECT_TRUE(contains(e.what(), " methodA/smootherForTest")) << e.what();
+    }
+}
+
+TEST(Registry, DuplicateInAScopedFamilyNamesTheScopedFamily) {
+    RegistryIndex index;
+    index.add("family", RegistryItem{"same", "first", "libA.so", nullptr}, "m1");
+    index.add("family", RegistryItem{"same", "second", "libB.so", nullptr}, "m2");
+    index.checkConflicts();  // one name in two methods: no clash
+    index.add("family", RegistryItem{"same", "third", "libC.so", nullptr}, "m2");
+    try {
+        index.checkConflicts();
+        FAIL() << "no error";
+    } catch (const Error& e) {
+        EXPECT_TRUE(
+            contains(e.what(), "family (m2) type 'same' is registered twice: by libB.so and by libC.so"))
+            << e.what();
+    }
+}
