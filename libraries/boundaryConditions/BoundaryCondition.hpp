@@ -44,6 +44,7 @@
 // A condition that acts on particles picked once by their initial positions (skewSymmetricPlane,
 // prescribedTraction) keeps them by globalId and re-finds them in selectionUpdated().
 #include "boundaryConditions/GhostBlock.hpp"
+#include "boundaryConditions/Plane.hpp"
 #include "boundaryConditions/Selection.hpp"
 #include "core/Registry.hpp"
 #include "particles/ParticleSet.hpp"
@@ -119,6 +120,13 @@ public:
         if (active(t)) ghostLayer(particles, velocity, hMax, block);
     }
     virtual bool makesGhosts() const { return false; }
+    // The plane across which a total-Lagrangian method mirrors its reference configuration once
+    // (BoundaryConditionList::referenceImages), with the images' parity: symmetryPlane +1,
+    // skewSymmetricPlane -1 (GhostBlock.hpp). Null for every other condition.
+    virtual const Plane<Dim>* referenceMirror(double& parity) const {
+        parity = 1.0;
+        return nullptr;
+    }
 
 protected:
     // `allByDefault`: without `regions`/`shape`/`all` the selection is every particle (planes,

@@ -50,6 +50,26 @@ GhostBlock<Dim> BoundaryConditionList<Dim>::ghosts(const ParticleSet<Dim>& parti
 }
 
 template <int Dim>
+std::vector<typename BoundaryConditionList<Dim>::ReferenceMirror>
+BoundaryConditionList<Dim>::referenceMirrors() const {
+    std::vector<ReferenceMirror> mirrors;
+    for (const auto& c : conditions_) {
+        double parity = 1.0;
+        if (const Plane<Dim>* plane = c->referenceMirror(parity)) mirrors.push_back({plane, parity});
+    }
+    return mirrors;
+}
+
+template <int Dim>
+GhostBlock<Dim> BoundaryConditionList<Dim>::referenceImages(const std::vector<VectorType>& X,
+                                                            double depth) const {
+    GhostBlock<Dim> block;
+    for (const auto& mirror : referenceMirrors())
+        block.referenceImagesAcross(X, *mirror.plane, mirror.parity, depth);
+    return block;
+}
+
+template <int Dim>
 void BoundaryConditionList<Dim>::addBoundaryForces(const ParticleSet<Dim>& particles,
                                                    std::vector<VectorType>& force, double t) const {
     for (const auto& c : conditions_) c->addBoundaryForce(particles, force, t);

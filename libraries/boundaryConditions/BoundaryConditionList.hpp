@@ -50,6 +50,18 @@ public:
     void updateSelections(const ParticleSet<Dim>& particles);
     GhostBlock<Dim> ghosts(const ParticleSet<Dim>& particles, const std::vector<VectorType>& velocity,
                            double hMax, double t) const;
+    // The conditions that mirror a total-Lagrangian reference configuration, in the order written
+    // (BoundaryCondition::referenceMirror), with their parities.
+    struct ReferenceMirror {
+        const Plane<Dim>* plane;
+        double parity;
+    };
+    std::vector<ReferenceMirror> referenceMirrors() const;
+    // The images of the reference positions X across those planes, made once: each plane in the
+    // order written mirrors X and the images already made (GhostBlock::referenceImagesAcross),
+    // for points with tolerance < d < depth. Every condition mirrors whatever its selection or
+    // release time: the images extend the body, they do not constrain it. No velocity.
+    GhostBlock<Dim> referenceImages(const std::vector<VectorType>& X, double depth) const;
     // Adds every condition's boundary forces [N] to `force` (sized to the particles by the caller).
     void addBoundaryForces(const ParticleSet<Dim>& particles, std::vector<VectorType>& force, double t) const;
     void constrainAcceleration(ParticleSet<Dim>& particles, std::vector<VectorType>& acceleration, double t);

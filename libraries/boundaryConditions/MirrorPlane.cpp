@@ -86,6 +86,7 @@ void MirrorPlane<Dim>::ghostLayer(const ParticleSet<Dim>& particles, const std::
         block.velocity.push_back(image(velocity[i]));
         block.source.push_back(i);
         block.map.push_back(reflection);
+        block.parity.push_back(1.0);
     }
     if (earlier == 0) return;
     std::vector<char> isSelected(x.size(), 0);
@@ -101,6 +102,7 @@ void MirrorPlane<Dim>::ghostLayer(const ParticleSet<Dim>& particles, const std::
         block.velocity.push_back(velocity);
         block.source.push_back(block.source[g]);
         block.map.push_back(map);
+        block.parity.push_back(double(block.parity[g]));
     }
 }
 

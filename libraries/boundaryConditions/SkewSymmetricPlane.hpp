@@ -22,6 +22,11 @@ public:
     SkewSymmetricPlane(const Dictionary& dict, const ParticleSet<Dim>& particles);
     static KeywordSchema keywords();
     const Plane<Dim>& plane() const { return plane_; }
+    // Mirrored by a total-Lagrangian method with parity -1 (the odd extension) (GhostBlock.hpp).
+    const Plane<Dim>* referenceMirror(double& parity) const override {
+        parity = -1.0;
+        return &plane_;
+    }
     // Current indices of the particles picked on the plane.
     const std::vector<std::size_t>& onPlane() const { return indices_; }
     std::string describe() const override;

@@ -12,6 +12,11 @@ public:
     SymmetryPlane(const Dictionary& dict, const ParticleSet<Dim>& particles);
     static KeywordSchema keywords();
     const Plane<Dim>& plane() const { return plane_; }
+    // Mirrored by a total-Lagrangian method with parity +1 (GhostBlock.hpp).
+    const Plane<Dim>* referenceMirror(double& parity) const override {
+        parity = 1.0;
+        return &plane_;
+    }
 
 protected:
     void velocityConstraint(ParticleSet<Dim>& particles, std::vector<VectorType>& v, double) override;

@@ -22,8 +22,6 @@
 // strain H_zz = det F_2D exactly), and the laws see 3x3 tensors.
 #include "tlSph/TlSphSolver.hpp"
 
-#include "boundaryConditions/SkewSymmetricPlane.hpp"
-#include "boundaryConditions/SymmetryPlane.hpp"
 #include "core/Log.hpp"
 #include "core/Parallel.hpp"
 #include "solver/InitialState.hpp"
@@ -38,7 +36,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
-#include <type_traits>
 
 namespace mfdyn {
 
@@ -194,7 +191,7 @@ void TlSphSolver<Dim>::initialiseFields() {
             "essentialBoundaryConditions",
             "'" + essential + "' is not valid; valid choices: direct | lagrangeMultiplier");
     const bool lagrangeMultiplier = essential == "lagrangeMultiplier" && !boundaries_.empty();
-    if (lagrangeMultiplier && !ghostSource_.empty())
+    if (lagrangeMultiplier && !ghosts_.empty())
         throw properties_.error(
             "essentialBoundaryConditions",
             "lagrangeMultiplier needs `mirrorGhosts no;`: across a mirrored plane the constraint "
@@ -215,7 +212,7 @@ void TlSphSolver<Dim>::initialiseFields() {
                   (lagrangeMultiplier ? " with essentialBoundaryConditions lagrangeMultiplier)" : ")"));
     Stopwatch watch;
     std::vector<Vector<Dim>> Xall(*X_);
-    Xall.insert(Xall.end(), ghostPosition_.begin(), ghostPosition_.end());
+    Xall.insert(Xall.end(), ghosts_.position.begin(), ghosts_.position.end());
     operators_ = std::make_unique<ReferenceOperators<Dim>>(Xall, V_, h_, *kernel_, options);
     if (lagrangeMultiplier) {
         essentialTime_ = time().value();
@@ -302,101 +299,58 @@ void TlSphSolver<Dim>::computeStress(bool updateState) {
 template <int Dim>
 void TlSphSolver<Dim>::makeMirrorGhosts() {
     if (!properties_.getOrDefault<bool>("mirrorGhosts", true)) return;
-    struct Mirror {
-        const Plane<Dim>* plane;
-        double parity;
-    };
-    std::vector<Mirror> mirrors;
-    for (std::size_t k = 0; k < boundaries_.size(); ++k) {
-        if (const auto* c = dynamic_cast<const SymmetryPlane<Dim>*>(&boundaries_[k]))
-            mirrors.push_back({&c->plane(), 1.0});
-        else if (const auto* c = dynamic_cast<const SkewSymmetricPlane<Dim>*>(&boundaries_[k]))
-            mirrors.push_back({&c->plane(), -1.0});
-    }
+    const auto mirrors = boundaries_.referenceMirrors();
     if (mirrors.empty()) return;
     // Deep enough that a ghost within the support of a real particle has its whole support
     // (real and ghost) inside the extended body: its corrected gradient is then the mirror image
-    // of its source's.
+    // of its source's. The images are of the reference configuration, made once (planes in the
+    // order written; images of images make the corners and edges).
     const double depth = 2.0 * kernel_->supportRadius(h_);
     const std::size_t n = x_.size();
-    std::vector<Vector<Dim>> position(*X_);
-    std::vector<std::size_t> source(n);
-    std::vector<Tensor<Dim>> map(n, Tensor<Dim>::Identity());
-    std::vector<double> parity(n, 1.0);
-    for (std::size_t i = 0; i < n; ++i) source[i] = i;
-    // Planes in the order written; images of images make the corners and edges.
-    for (const auto& mirror : mirrors) {
-        const Vector<Dim>& normal = mirror.plane->normal();
-        const Tensor<Dim> reflection = Tensor<Dim>::Identity() - 2.0 * normal * normal.transpose();
-        const std::size_t count = position.size();
-        for (std::size_t i = 0; i < count; ++i) {
-            const double d = mirror.plane->signedDistance(position[i]);
-            if (d <= mirror.plane->tolerance() || d >= depth) continue;  // on the plane: its own image
-            position.push_back(mirror.plane->mirror(position[i]));
-            source.push_back(source[i]);
-            map.push_back(Tensor<Dim>(reflection * map[i]));
-            parity.push_back(mirror.parity * parity[i]);
-        }
-    }
+    ghosts_ = boundaries_.referenceImages(*X_, depth);
     // A particle on a plane carries half (a quarter on an edge, ...) of its dual cell: the other
     // part is its own image's. In the extended body it is interior, so as a neighbour it counts
     // with its whole cell. (Its own equation is per unit volume and does not change.)
     for (std::size_t i = 0; i < n; ++i)
         for (const auto& mirror : mirrors)
             if (std::abs(mirror.plane->signedDistance((*X_)[i])) <= mirror.plane->tolerance()) V_[i] *= 2.0;
-    ghostPosition_.assign(position.begin() + long(n), position.end());
-    ghostSource_.assign(source.begin() + long(n), source.end());
-    ghostMap_.assign(map.begin() + long(n), map.end());
-    ghostParity_.assign(parity.begin() + long(n), parity.end());
-    for (std::size_t g = 0; g < ghostSource_.size(); ++g) V_.push_back(V_[ghostSource_[g]]);
+    for (std::size_t g = 0; g < ghosts_.size(); ++g) V_.push_back(V_[ghosts_.source[g]]);
     // Reactions of the planes reach the body through the ghosts: the internal forces no longer
     // sum to zero over the real particles, and projecting them would remove the reactions.
-    if (!ghostSource_.empty() && (projectMomentum_ || projectDissipation_)) {
+    if (!ghosts_.empty() && (projectMomentum_ || projectDissipation_)) {
         projectMomentum_ = projectDissipation_ = false;
         Log::info("Momentum projections off: the symmetry planes' mirror ghosts carry their reactions");
     }
-    Log::info("Mirror ghosts: " + std::to_string(ghostSource_.size()) + " reference images across " +
+    Log::info("Mirror ghosts: " + std::to_string(ghosts_.size()) + " reference images across " +
               std::to_string(mirrors.size()) + " symmetry/skew-symmetric planes (depth " +
               std::to_string(depth) + ")");
 }
 
 template <int Dim>
-template <class T>
-const T* TlSphSolver<Dim>::withGhosts(const std::vector<T>& real, std::vector<T>& all, GhostMap kind) const {
-    if (ghostSource_.empty()) return real.data();
-    const std::size_t n = real.size(), g = ghostSource_.size();
-    all.resize(n + g);
-    std::copy(real.begin(), real.end(), all.begin());
-    parallelFor(g, [&](std::size_t k) {
-        const T& a = real[ghostSource_[k]];
-        const double s = ghostParity_[k];
-        const Tensor<Dim>& Q = ghostMap_[k];
-        // (In 1D a vector and a tensor are one type: the kind, not the type, decides.)
-        if constexpr (std::is_same_v<T, double>) {
-            all[n + k] = kind == GhostMap::deformation ? 1.0 + s * (a - 1.0)
-                         : kind == GhostMap::copy      ? a
-                                                       : s * a;
-        } else if constexpr (T::ColsAtCompileTime == 1 && Dim > 1) {
-            all[n + k] = kind == GhostMap::copy ? a : T(s * (Q * a));
-        } else {
-            switch (kind) {
-                case GhostMap::vector:
-                    all[n + k] = s * (Q * a);
-                    break;
-                case GhostMap::tensor:
-                    all[n + k] = s * Q * a * Q.transpose();
-                    break;
-                case GhostMap::deformation:
-                    all[n + k] =
-                        Tensor<Dim>::Identity() + s * Q * (a - Tensor<Dim>::Identity()) * Q.transpose();
-                    break;
-                case GhostMap::copy:
-                    all[n + k] = a;
-                    break;
-            }
-        }
+void TlSphSolver<Dim>::placeGhosts() {
+    if (ghosts_.empty()) return;
+    // On the particle set's ghost range for the pair loops of one stage: every field copied from
+    // its source (rho0, the material), then what the image changes. The pair loops read v, P, J
+    // and rho0; X, F, H and the pressure are mapped too so that the range is a true image; the
+    // plastic state and x keep their source's values (nothing reads them at a ghost).
+    const std::size_t n = particles_->addGhosts(ghosts_.source, ghosts_.map);
+    parallelFor(ghosts_.size(), [&](std::size_t g) {
+        const std::size_t i = n + g, src = ghosts_.source[g];
+        (*X_)[i] = ghosts_.position[g];
+        v_[i] = ghosts_.reflectVector(g, v_[src]);
+        (*P_)[i] = ghosts_.reflectTensor(g, (*P_)[src]);
+        (*pressure_)[i] = ghosts_.reflectScalar(g, (*pressure_)[src]);
+        (*F_)[i] = ghosts_.reflectDeformation(g, (*F_)[src]);
+        if (H_) (*H_)[i] = ghosts_.reflectDeformation(g, (*H_)[src]);
+        if (J_) (*J_)[i] = ghosts_.reflectJacobian(g, (*J_)[src]);
     });
-    return all.data();
+}
+
+template <int Dim>
+template <class T, class Map>
+void TlSphSolver<Dim>::imagesOf(std::vector<T>& field, std::size_t n, Map&& map) const {
+    field.resize(n + ghosts_.size());
+    parallelFor(ghosts_.size(), [&](std::size_t g) { field[n + g] = map(g, field[ghosts_.source[g]]); });
 }
 
 template <int Dim>
@@ -404,11 +358,12 @@ void TlSphSolver<Dim>::computeDisplacementGradient() {
     const auto& rows = operators_->neighbours();
     const auto& g = operators_->gradient();
     const auto& offsets = rows.offsets();
-    std::vector<Vector<Dim>> uReal(x_.size()), uAll;
-    for (std::size_t i = 0; i < x_.size(); ++i) uReal[i] = x_[i] - (*X_)[i];
-    const Vector<Dim>* u = withGhosts(uReal, uAll, GhostMap::vector);
+    const std::size_t n = x_.size();
+    std::vector<Vector<Dim>> u(n);
+    for (std::size_t i = 0; i < n; ++i) u[i] = x_[i] - (*X_)[i];
+    imagesOf(u, n, [&](std::size_t g, const Vector<Dim>& a) { return ghosts_.reflectVector(g, a); });
     auto& F = *F_;
-    parallelForWork(x_.size(), offsets[x_.size()], [&](std::size_t a) {
+    parallelForWork(n, offsets[n], [&](std::size_t a) {
         Tensor<Dim> grad = Tensor<Dim>::Zero();
         for (std::size_t k = offsets[a]; k < offsets[a + 1]; ++k)
             grad += V_[rows.indices()[k]] * (u[rows.indices()[k]] - u[a]) * g[k].transpose();
@@ -426,17 +381,19 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
     }
     stressCurrent_ = false;
     auto rateTime = phase("computeRates");
-    const std::size_t n = x_.size();
+    const std::size_t n = x_.size();  // the owned particles (ghosts are placed below)
     const auto& rows = operators_->neighbours();
     const auto& offsets = rows.offsets();
     const auto& g = operators_->gradient();
     const auto& gAtNeighbour = operators_->gradientAtNeighbour();
     const auto& lap = operators_->laplacian();
-    // Real particles first, then their mirror images (none without symmetry planes).
-    const Vector<Dim>* v = withGhosts(v_, vAll_, GhostMap::vector);
-    const Tensor<Dim>* P = withGhosts(*P_, PAll_, GhostMap::tensor);
-    const double* J = J_ ? withGhosts(*J_, JAll_, GhostMap::deformation) : nullptr;
-    const double* rho0 = withGhosts(rho0_, rho0All_, GhostMap::copy);
+    // Real particles first, then their mirror images on the ghost range (none without symmetry
+    // planes), for the pair loop only.
+    placeGhosts();
+    const Vector<Dim>* v = v_.data();
+    const Tensor<Dim>* P = P_->data();
+    const double* J = J_ ? J_->data() : nullptr;
+    const double* rho0 = rho0_.data();
     const bool lapMomentum = !lapP_.empty(), lapJacobian = !lapJ_.empty();
     const bool evolveF = formulation_->evolvesF();
     std::vector<Vector<Dim>> force(n);
@@ -464,6 +421,7 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
         if (lapMomentum) lapP_[a] = Lp;
         if (lapJacobian) lapJ_[a] = LJ;
     });
+    particles_->clearGhosts();
     pairInteractions_ += double(offsets[n]);
     rateTime.stop();
 
@@ -473,8 +431,14 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
     std::vector<Vector<Dim>> dissipationP;
     std::vector<double> dissipationJ;
     if (!lap2P_.empty() || !lap2J_.empty()) {
-        const Vector<Dim>* Lp = lap2P_.empty() ? nullptr : withGhosts(lapP_, lapPAll_, GhostMap::vector);
-        const double* LJ = lap2J_.empty() ? nullptr : withGhosts(lapJ_, lapJAll_, GhostMap::vector);
+        // The Laplacians at the ghosts: their sources' mapped (lapP_, lapJ_ hold n + ghosts).
+        if (!lap2P_.empty())
+            imagesOf(lapP_, n,
+                     [&](std::size_t g, const Vector<Dim>& a) { return ghosts_.reflectVector(g, a); });
+        if (!lap2J_.empty())
+            imagesOf(lapJ_, n, [&](std::size_t g, double a) { return ghosts_.reflectScalar(g, a); });
+        const Vector<Dim>* Lp = lap2P_.empty() ? nullptr : lapP_.data();
+        const double* LJ = lap2J_.empty() ? nullptr : lapJ_.data();
         parallelForWork(n, offsets[n], [&](std::size_t a) {
             Vector<Dim> L2p = Vector<Dim>::Zero();
             double L2J = 0;
@@ -687,10 +651,10 @@ std::optional<double> TlSphSolver<Dim>::internalEnergy() const {
 
 template <int Dim>
 double TlSphSolver<Dim>::pressureOscillation() const {
-    std::vector<double> all;
-    withGhosts(*pressure_, all, GhostMap::vector);
-    const auto lap = operators_->laplacianOf(ghostSource_.empty() ? *pressure_ : all);
     const std::size_t n = x_.size();
+    std::vector<double> p(*pressure_);
+    imagesOf(p, n, [&](std::size_t g, double a) { return ghosts_.reflectScalar(g, a); });
+    const auto lap = operators_->laplacianOf(p);
     // Figures of the whole body for the summary: global sums and maxima (here and below).
     const double num = GlobalReduce::sum<double>(
         n, [&](std::size_t i) { return V_[i] * std::abs(lap[i]) * spacing_ * spacing_; });
@@ -703,10 +667,10 @@ template <int Dim>
 double TlSphSolver<Dim>::compatibilityError() const {
     std::vector<Vector<Dim>> u(x_.size());
     for (std::size_t i = 0; i < u.size(); ++i) u[i] = x_[i] - (*X_)[i];
-    std::vector<Vector<Dim>> all;
-    withGhosts(u, all, GhostMap::vector);
-    const auto grad = operators_->gradientOf(ghostSource_.empty() ? u : all);
-    return GlobalReduce::max(u.size(), [&](std::size_t i) {
+    const std::size_t n = u.size();
+    imagesOf(u, n, [&](std::size_t g, const Vector<Dim>& a) { return ghosts_.reflectVector(g, a); });
+    const auto grad = operators_->gradientOf(u);
+    return GlobalReduce::max(n, [&](std::size_t i) {
         return ((*F_)[i] - Tensor<Dim>::Identity() - grad[i]).norm() / std::max(1.0, (*F_)[i].norm());
     });
 }

@@ -73,13 +73,13 @@ private:
     void readMaterials();
     void initialiseFields();
     void makeMirrorGhosts();
-    // How a quantity maps to a mirror ghost: vector s Q a (scalars s a), tensor s Q A Q^T,
-    // deformation I + s Q (A - I) Q^T (scalars 1 + s (J - 1)), copy.
-    enum class GhostMap { vector, tensor, deformation, copy };
-    // The array `real` followed by its values at the mirror ghosts: `all` when there are ghosts,
-    // else `real` itself.
-    template <class T>
-    const T* withGhosts(const std::vector<T>& real, std::vector<T>& all, GhostMap kind) const;
+    // The mirror ghosts on the particle set's ghost range, their fields mapped (GhostBlock.hpp);
+    // computeRates clears them after its pair loop.
+    void placeGhosts();
+    // Scratch `field` of the n owned particles extended by its images at the ghosts,
+    // field[n + g] = map(g, field[source of g]).
+    template <class T, class Map>
+    void imagesOf(std::vector<T>& field, std::size_t n, Map&& map) const;
     void computeStress(bool updateState);
     void computeDisplacementGradient();
     void computeRates(const std::vector<Vector<Dim>>& xTilde, double t);
@@ -124,16 +124,11 @@ private:
     std::vector<double>* plasticOutOfPlane_ = nullptr;
     std::vector<double>* plasticStrain_ = nullptr;
 
-    // Mirror ghosts of symmetryPlane (parity +1) and skewSymmetricPlane (parity -1) conditions,
-    // made once in the reference configuration: ghost g images real particle ghostSource_[g]
-    // through the reflections ghostMap_[g] (Q); a vector maps to s Q a, a tensor to s Q A Q^T.
-    std::vector<Vector<Dim>> ghostPosition_;
-    std::vector<std::size_t> ghostSource_;
-    std::vector<Tensor<Dim>> ghostMap_;
-    std::vector<double> ghostParity_;
-    std::vector<Vector<Dim>> vAll_, lapPAll_;
-    std::vector<Tensor<Dim>> PAll_;
-    std::vector<double> JAll_, rho0All_, lapJAll_;
+    // Mirror ghosts of the symmetryPlane (parity +1) and skewSymmetricPlane (parity -1)
+    // conditions, made once in the reference configuration (BoundaryConditionList::
+    // referenceImages): ghost g images real particle ghosts_.source[g] at ghosts_.position[g],
+    // placed on the particle set's ghost range for each stage's pair loop.
+    GhostBlock<Dim> ghosts_;
 
     // Scratch: volumes, the rates of a stage, Laplacians, the state at the start of a step.
     std::vector<double> V_;

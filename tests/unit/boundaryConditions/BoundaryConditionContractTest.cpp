@@ -55,6 +55,7 @@ void checkContract(const std::string& type) {
     EXPECT_EQ(ghosts.size(), ghosts.position.size());
     EXPECT_EQ(ghosts.size(), ghosts.velocity.size());
     EXPECT_EQ(ghosts.size(), ghosts.map.size());
+    EXPECT_EQ(ghosts.size(), ghosts.parity.size());  // the reflections read it
     EXPECT_EQ(ghosts.empty(), !bc->makesGhosts());
     for (std::size_t i = 0; i < p.size(); ++i) {
         if (x0[i][0] < 0.25) continue;
