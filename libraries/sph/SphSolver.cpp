@@ -45,29 +45,6 @@ namespace mfdyn {
 
 namespace {
 
-// `momentum variational` (default: matched to the density scheme, conservative) or `difference`:
-// dv_i/dt = −ρ_i⁻¹ Σ_j (m_j/ρ_j)(P_j − P_i) ∇_iW_ij(h_i), free of the K-error of §7 but not
-// momentum-conserving (Zisis 2017 §2.4: rejected for shocks, offered for comparison).
-bool readMomentumForm(const Dictionary& properties) {
-    const std::string form = properties.getOrDefault<std::string>("momentum", "variational");
-    if (form != "variational" && form != "difference")
-        throw properties.error("momentum",
-                               "'" + form + "' is not valid; valid choices: variational | difference");
-    return form == "difference";
-}
-
-// `integrator leapfrog` (Zisis 2017 eqs. 4.29–4.34, one rate evaluation a step) or
-// `predictorCorrector` (the midpoint rule, two evaluations a step, no state carried between steps):
-//   U* = U^n + f(x^n, U^n) Δt/2,  x* = x^n + v^n Δt/2;   f* = f(x*, U*);
-//   U^{n+1} = U^n + f* Δt,        x^{n+1} = x^n + (v^n + f_v* Δt/2) Δt.
-bool readIntegrator(const Dictionary& properties) {
-    const std::string type = properties.getOrDefault<std::string>("integrator", "leapfrog");
-    if (type != "leapfrog" && type != "predictorCorrector")
-        throw properties.error("integrator",
-                               "'" + type + "' is not valid; valid choices: leapfrog | predictorCorrector");
-    return type == "predictorCorrector";
-}
-
 std::string hex(double x) {
     char s[64];
     std::snprintf(s, sizeof s, "%a", x);
@@ -91,7 +68,50 @@ double energyForPressure(const EquationOfState& eos, double rho, double target) 
     return 0.5 * (lo + hi);
 }
 
+// constant/sphProperties/artificialStress (Monaghan 2000; Gray, Monaghan & Swift 2001).
+KeywordSchema artificialStressKeywords() {
+    return KeywordSchema("impactSph", "artificialStress")
+        .scalar("epsilon", "-", "epsilon: the fraction of the tensile principal stress opposed (0: off)")
+        .atLeast(0)
+        .orDefault(0.3)
+        .scalar("exponent", "-", "n of the pair factor f_ij^n, f_ij = W(r_ij, h)/W(dp, h)")
+        .orDefault(4.0);
+}
+
 }  // namespace
+
+// constant/sphProperties. The family dictionaries are read by their families; `momentum`:
+// variational (matched to the density scheme, conservative) or difference, dv_i/dt =
+// −ρ_i⁻¹ Σ_j (m_j/ρ_j)(P_j − P_i) ∇_iW_ij(h_i), free of the K-error of §7 but not
+// momentum-conserving (Zisis 2017 §2.4: rejected for shocks, offered for comparison);
+// `integrator`: leapfrog (Zisis 2017 eqs. 4.29–4.34, one rate evaluation a step) or
+// predictorCorrector (the midpoint rule, two evaluations a step, no state carried between steps):
+//   U* = U^n + f(x^n, U^n) Δt/2,  x* = x^n + v^n Δt/2;   f* = f(x*, U*);
+//   U^{n+1} = U^n + f* Δt,        x^{n+1} = x^n + (v^n + f_v* Δt/2) Δt.
+template <int Dim>
+KeywordSchema SphSolver<Dim>::keywords() {
+    return KeywordSchema("solver", "impactSph")
+        .dictionary("kernel", "the smoothing kernel W(r, h) (family kernel)")
+        .dictionary("densityScheme", "the density measure, its form and gradH terms (family densityScheme)")
+        .dictionary("smoothingLength", "the smoothing-length law h (family smoothingLength)")
+        .dictionary("dissipation", "the artificial dissipation (family dissipation)")
+        .scalar("densityRateLimit", "-", "xi_rho of the time-step limit dt <= xi_rho rho/|drho/dt| (0: off)")
+        .atLeast(0)
+        .orDefault(0.0)
+        .scalar("neighbourSkin", "-", "Verlet skin as a fraction of the initial median support radius")
+        .atLeast(0)
+        .orDefault(0.2)
+        .word("momentum", {"variational", "difference"},
+              "momentum equation: variational (conservative) or difference (for comparison)")
+        .orDefault("variational")
+        .word("integrator", {"leapfrog", "predictorCorrector"},
+              "time integrator: leapfrog (one rate evaluation a step) or midpoint predictor-corrector")
+        .orDefault("leapfrog")
+        .dictionary("artificialStress",
+                    "Monaghan's artificial stress against the tensile instability of solids: epsilon (-, "
+                    ">= 0, default 0.3), exponent (-, default 4)")
+        .optional();
+}
 
 template <int Dim>
 SphSolver<Dim>::SphSolver(SolverRun& run)
@@ -100,15 +120,17 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
       particles_(owner_.get()),
       properties_(openConstant("sphProperties")),
       materialProperties_(openConstant("materialProperties")),
-      kernel_(Kernel::New(properties_.subDict("kernel"))),
+      settings_(keywords().read(properties_)),
+      kernel_(Kernel::New(settings_.dictionary("kernel"))),
       W_(kernel_->template evaluator<Dim>()),
-      scheme_(DensityScheme::New(properties_.subDict("densityScheme"))),
-      hLaw_(SmoothingLengthLaw::New(properties_.subDict("smoothingLength"))),
-      diss_(Dissipation::New(properties_.subDict("dissipation"))->parameters()),
-      densityRateLimit_(properties_.getOrDefault<double>("densityRateLimit", 0.0)),
+      scheme_(DensityScheme::New(settings_.dictionary("densityScheme"))),
+      hLaw_(SmoothingLengthLaw::New(settings_.dictionary("smoothingLength"))),
+      diss_(Dissipation::New(settings_.dictionary("dissipation"))->parameters()),
+      densityRateLimit_(settings_.scalar("densityRateLimit")),
+      neighbourSkin_(settings_.scalar("neighbourSkin")),
       omegaMin_(scheme_->omegaMin()),
-      differenceForm_(readMomentumForm(properties_)),
-      predictorCorrector_(readIntegrator(properties_)),
+      differenceForm_(settings_.word("momentum") == "difference"),
+      predictorCorrector_(settings_.word("integrator") == "predictorCorrector"),
       x_(particles_->position()),
       v_(particles_->vectorField("velocity")),
       m_(requireScalarField(*particles_, "mass", "particle masses")),
@@ -121,16 +143,13 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
         {"updateNeighbours", "densitySums", "equationOfState", "computeRates", "strength", "integrate"});
     readMaterials();
     initialiseFields();
-    // Checked here, though the Verlet list is built on the first step: read there only, a correct
-    // entry would be reported never read (and fail strictDictionaries).
-    if (properties_.getOrDefault<double>("neighbourSkin", 0.2) < 0)
-        throw properties_.error("neighbourSkin", "the Verlet skin must be non-negative");
-    if (const Dictionary* as = properties_.findDict("artificialStress")) {
-        artificialStressEpsilon_ = as->getOrDefault<double>("epsilon", 0.3);
-        artificialStressExponent_ = as->getOrDefault<double>("exponent", 4.0);
-        if (artificialStressEpsilon_ < 0) throw as->error("epsilon", "epsilon must be non-negative");
+    if (settings_.given("artificialStress")) {
+        const KeywordValues as = artificialStressKeywords().read(settings_.dictionary("artificialStress"));
+        artificialStressEpsilon_ = as.scalar("epsilon");
+        artificialStressExponent_ = as.scalar("exponent");
         if (!anyStrength_)
-            throw as->error("epsilon", "artificial stress acts on solids: no material has a strength law");
+            throw settings_.error("artificialStress",
+                                  "artificial stress acts on solids: no material has a strength law");
     }
     boundaries_ = readBoundaryConditions(*particles_);
 }
@@ -209,42 +228,38 @@ void SphSolver<Dim>::initialiseFields() {
     if (omega_) std::fill(omega_->begin(), omega_->end(), 1.0);
 }
 
+// Mirror ghosts on the particle set's owned/ghost range: GhostBlock (boundaryConditions) gives
+// their positions, velocities, sources and maps; the set copies every field from the source and
+// reflects the stress. They are read-only neighbours in every sum of this rate evaluation.
 template <int Dim>
 void SphSolver<Dim>::addGhosts() {
-    nReal_ = x_.size();
     if (!boundaries_.makesGhosts()) return;
+    const std::size_t owned = particles_->ownedCount();
     // Global: the layer of one rank is seen by the particles of every rank near the plane, so it
     // must cover the largest support anywhere, and every rank must build it alike.
-    const double hMax = GlobalReduce::max(nReal_, [&](std::size_t i) { return h_[i]; });
+    const double hMax = GlobalReduce::max(owned, [&](std::size_t i) { return h_[i]; });
     // The layer must cover the kernel's support; mirrorPlane makes it thicknessFactor (3) × the
     // length it is given, so it is given a third of the largest support radius.
-    ghosts_ = boundaries_.ghosts(*particles_, v_, kernel_->supportRadius(hMax) / 3.0, time().value());
-    const std::size_t g = ghosts_.size();
-    particles_->resize(nReal_ + g);
-    a_.resize(nReal_ + g), b_.resize(nReal_ + g), cc_.resize(nReal_ + g);
-    for (std::size_t k = 0; k < g; ++k) {
-        const std::size_t i = nReal_ + k, src = ghosts_.source[k];
-        x_[i] = ghosts_.position[k];
-        v_[i] = ghosts_.velocity[k];
-        m_[i] = m_[src], rho_[i] = rho_[src], h_[i] = h_[src], material_[i] = material_[src];
-        if (e_) (*e_)[i] = (*e_)[src];
-        if (tau_) (*tau_)[i] = SymmTensor<Dim>::fromFull(ghosts_.reflectTensor(k, (*tau_)[src].full()));
+    const GhostBlock<Dim> ghosts =
+        boundaries_.ghosts(*particles_, v_, kernel_->supportRadius(hMax) / 3.0, time().value());
+    particles_->addGhosts(ghosts.source, ghosts.map);
+    for (std::size_t k = 0; k < ghosts.size(); ++k) {
+        x_[owned + k] = ghosts.position[k];
+        v_[owned + k] = ghosts.velocity[k];
     }
+    if (tau_) particles_->reflectTensorsToGhosts(*tau_);
+    const std::size_t n = x_.size();
+    a_.resize(n), b_.resize(n), cc_.resize(n);
     // Ghosts come and go with the flow: the candidate list is rebuilt each step they exist.
     if (verlet_) verlet_->invalidate();
 }
 
 template <int Dim>
-void SphSolver<Dim>::copyToGhosts(std::vector<double>& field) {
-    for (std::size_t k = 0; k < ghosts_.size(); ++k) field[nReal_ + k] = field[ghosts_.source[k]];
-}
-
-template <int Dim>
 void SphSolver<Dim>::removeGhosts() {
-    if (ghosts_.empty()) return;
-    particles_->resize(nReal_);
-    a_.resize(nReal_), b_.resize(nReal_), cc_.resize(nReal_);
-    ghosts_.clear();
+    if (particles_->ghostCount() == 0) return;
+    particles_->clearGhosts();
+    const std::size_t n = x_.size();
+    a_.resize(n), b_.resize(n), cc_.resize(n);
 }
 
 template <int Dim>
@@ -257,9 +272,12 @@ void SphSolver<Dim>::updateNeighbours() {
         std::vector<double> sorted(radius);
         std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
         const double median = sorted.empty() ? 1.0 : sorted[sorted.size() / 2];
-        const double skin = properties_.getOrDefault<double>("neighbourSkin", 0.2) * median;
+        const double skin = neighbourSkin_ * median;
         verlet_ = std::make_unique<VerletList<Dim>>(skin);
     }
+    // Particles appended or removed (preStep) invalidate the list; without ghosts nothing else
+    // changes the version, with them the list is rebuilt each step anyway.
+    verlet_->track(particles_->topologyVersion());
     if (verlet_->update(x_, radius)) ++rebuilds_;
     ++neighbourUpdates_;
     neighbours_.list = &verlet_->candidates();
@@ -276,7 +294,7 @@ void SphSolver<Dim>::solveSmoothingLength() {
         throw properties_.error("smoothingLength",
                                 "the summation smoothing length needs an explicit density sum "
                                 "(densityScheme mass or number)");
-    const std::size_t n = nReal_;
+    const std::size_t n = particles_->ownedCount();
     scheme_->coefficients(x_.size(), m_.data(), rho_.data(), a_.data(), b_.data(), cc_.data());
     const double eta = hLaw_->eta(), tolerance = hLaw_->tolerance();
     const int maxIterations = hLaw_->maxIterations();
@@ -312,7 +330,7 @@ void SphSolver<Dim>::solveSmoothingLength() {
         }
         h_[i] = h;
     });
-    copyToGhosts(h_);
+    particles_->copyToGhosts(h_);
     if (std::any_of(failed.begin(), failed.end(), [](int v) { return v != 0; }))
         Log::warning("summation smoothing length: some particles did not converge to the tolerance in " +
                      std::to_string(maxIterations) + " iterations (step " +
@@ -322,14 +340,14 @@ void SphSolver<Dim>::solveSmoothingLength() {
 template <int Dim>
 void SphSolver<Dim>::computeEquationOfState() {
     auto timed = phase("equationOfState");
-    const std::size_t n = nReal_;
+    const std::size_t n = particles_->ownedCount();
     parallelFor(n, [&](std::size_t i) {
         const EquationOfState& eos = *materials_[material_[i]].eos;
         const double e = e_ ? (*e_)[i] : 0.0;
         eos.evaluate(1, &rho_[i], &e, &p_[i], &c_[i]);
     });
-    copyToGhosts(p_);
-    copyToGhosts(c_);
+    particles_->copyToGhosts(p_);
+    particles_->copyToGhosts(c_);
 }
 
 template <int Dim>
@@ -361,7 +379,7 @@ template <int Dim>
 void SphSolver<Dim>::selectNeighbours() {
     auto timed = phase("updateNeighbours");
     const NeighbourList& list = verlet_->candidates();
-    const std::size_t n = nReal_;
+    const std::size_t n = particles_->ownedCount();
     selected_.resize(list.pairCount());
     selectedCount_.resize(n);
     const Vector<Dim>* x = x_.data();
@@ -389,7 +407,7 @@ void SphSolver<Dim>::selectNeighbours() {
 template <int Dim>
 void SphSolver<Dim>::computeDensitySums() {
     auto timed = phase("densitySums");
-    const std::size_t n = nReal_;
+    const std::size_t n = particles_->ownedCount();
     scheme_->coefficients(x_.size(), m_.data(), rho_.data(), a_.data(), b_.data(), cc_.data());
     const bool summation = scheme_->summation();
     gradientWithSums_ = tau_ && !summation;
@@ -433,18 +451,18 @@ void SphSolver<Dim>::computeDensitySums() {
     });
     if (summation) {
         std::copy(newRho.begin(), newRho.end(), rho_.begin());
-        copyToGhosts(rho_);
+        particles_->copyToGhosts(rho_);
         scheme_->coefficients(x_.size(), m_.data(), rho_.data(), a_.data(), b_.data(), cc_.data());
         parallelFor(x_.size(), [&](std::size_t i) { volume_[i] = m_[i] / rho_[i]; });
     }
-    if (omega_) copyToGhosts(*omega_);
-    if (number_) copyToGhosts(*number_);
+    if (omega_) particles_->copyToGhosts(*omega_);
+    if (number_) particles_->copyToGhosts(*number_);
 }
 
 template <int Dim>
 void SphSolver<Dim>::computeRates() {
     auto timed = phase("computeRates");
-    const std::size_t n = nReal_;
+    const std::size_t n = particles_->ownedCount();
     const DissipationParameters d = diss_;
     const bool riemann = d.kind == DissipationParameters::Kind::riemann;
     const bool monaghan = d.kind == DissipationParameters::Kind::monaghanGingold;
@@ -474,7 +492,7 @@ void SphSolver<Dim>::computeRates() {
             }
             balsara[i] = std::abs(div) / (std::abs(div) + curl.norm() + 1e-4 * c_[i] / h_[i]);
         });
-        copyToGhosts(balsara);
+        particles_->copyToGhosts(balsara);
     }
 
     // Artificial stress R_i = Q diag(−ε max(λ_a, 0)/ρ_i²) Qᵀ from the principal values λ_a of the
@@ -629,7 +647,7 @@ void SphSolver<Dim>::computeVelocityGradient() {
     if (gradientWithSums_) return;  // done in the density-sum loop
     auto timed = phase("strength");
     const KernelEvaluator<Dim> W = W_;
-    parallelForWork(nReal_, neighbours_.list->pairCount(), [&](std::size_t i) {
+    parallelForWork(particles_->ownedCount(), neighbours_.list->pairCount(), [&](std::size_t i) {
         Tensor<Dim> L = Tensor<Dim>::Zero();
         const double invHi = invH_[i], gradNormi = gradNorm_[i];
         for (const auto j : neighbours_[i]) {
@@ -661,7 +679,7 @@ typename Strength<Dim>::Fields SphSolver<Dim>::strengthFields(std::size_t i, Sym
 template <int Dim>
 void SphSolver<Dim>::computeStressRate() {
     auto timed = phase("strength");
-    parallelFor(nReal_, [&](std::size_t i) {
+    parallelFor(particles_->ownedCount(), [&](std::size_t i) {
         if (const auto& law = materials_[material_[i]].strength)
             law->stressRate(strengthFields(i, &(*tau_)[i]));
         else
@@ -820,7 +838,7 @@ void SphSolver<Dim>::checkState(const char* phaseName) const {
         return !(rho_[i] > 0) || !std::isfinite(rho_[i]) || !x_[i].allFinite() || !v_[i].allFinite() ||
                !std::isfinite(p_[i]) || !(c_[i] > 0) || !(h_[i] > 0) || (e_ && !std::isfinite((*e_)[i]));
     };
-    Solver::checkState(phaseName, x_.size(), bad, [&](std::size_t i, double count) {
+    Solver::checkState(phaseName, particles_->ownedCount(), bad, [&](std::size_t i, double count) {
         std::ostringstream s;
         s.precision(6);
         s << "particle " << particles_->globalId()[i] << " (region " << particles_->region()[i]
@@ -842,7 +860,7 @@ std::optional<double> SphSolver<Dim>::internalEnergy() const {
     if (!e_) return std::nullopt;
     const auto& e = *e_;
     // A conservation sum: added to the global kinetic energy by conservedQuantities.
-    return GlobalReduce::sum<double>(x_.size(), [&](std::size_t i) { return m_[i] * e[i]; });
+    return GlobalReduce::sum<double>(particles_->ownedCount(), [&](std::size_t i) { return m_[i] * e[i]; });
 }
 
 template <int Dim>

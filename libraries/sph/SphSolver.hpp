@@ -32,6 +32,7 @@
 // deviatoricStress (and plasticStrain, temperature as the laws ask) only when a material has a
 // strength law other than none: a hydrodynamic scene carries no stress and runs no stress terms.
 #include "boundaryConditions/BoundaryConditionList.hpp"
+#include "core/KeywordSchema.hpp"
 #include "kernels/Kernel.hpp"
 #include "kernels/KernelEvaluator.hpp"
 #include "materials/equationOfState/EquationOfState.hpp"
@@ -51,6 +52,10 @@ namespace mfdyn {
 template <int Dim>
 class SphSolver final : public Solver {
 public:
+    // The keywords of constant/sphProperties (read through it; -describe, doc/models/solver).
+    static KeywordSchema keywords();
+    static constexpr const char* propertiesDictionary = "sphProperties";
+
     explicit SphSolver(SolverRun& run);
     ~SphSolver() override;
 
@@ -74,7 +79,6 @@ private:
     void initialiseFields();
     void ensureRates();
     void addGhosts();
-    void copyToGhosts(std::vector<double>& field);
     void removeGhosts();
     void updateNeighbours();
     void computeEquationOfState();
@@ -95,12 +99,14 @@ private:
     ParticleSet<Dim>* particles_;
     const Dictionary& properties_;
     const Dictionary& materialProperties_;
+    KeywordValues settings_;  // sphProperties through keywords()
     std::unique_ptr<Kernel> kernel_;
     KernelEvaluator<Dim> W_;
     std::unique_ptr<DensityScheme> scheme_;
     std::unique_ptr<SmoothingLengthLaw> hLaw_;
     DissipationParameters diss_;
     double densityRateLimit_;
+    double neighbourSkin_;
     double omegaMin_;
     bool differenceForm_;
     bool predictorCorrector_;
@@ -152,10 +158,8 @@ private:
     // that returns zero. neighbours_ points at the current list.
     std::unique_ptr<VerletList<Dim>> verlet_;
     BoundaryConditionList<Dim> boundaries_;
-    // Mirror ghosts of this step, appended after the nReal_ real particles while the rates are
-    // computed and removed before anything else sees the particles.
-    GhostBlock<Dim> ghosts_;
-    std::size_t nReal_ = 0;
+    // Mirror ghosts of this step live in the particle set's ghost range [ownedCount(), size())
+    // while the rates are computed, and are cleared before anything else sees the particles.
     // Rows of the candidate list or, once selectNeighbours() has run this step, of the pairs
     // within either support (row i: count[i] entries from selected + the candidate row's offset).
     struct Rows {
