@@ -22,6 +22,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -67,6 +68,8 @@ inline std::atomic<std::uint64_t> globalReductionCount{0};
 
 // The global hooks: the one place an MPI build changes. On one process they return their
 // argument. `T` for globalSum is anything summable by LocalReduce (double, size_t, SumArray<N>).
+// A struct of doubles whose += also takes a max (an error norm's Linf) is fine: an MPI build
+// reduces T with an MPI_Op made from its +=, so T must be trivially copyable and += commutative.
 template <class T>
 T globalSum(const T& local) {
     globalReductionCount.fetch_add(1, std::memory_order_relaxed);
@@ -79,6 +82,19 @@ inline double globalMax(double local) {
 inline double globalMin(double local) {
     globalReductionCount.fetch_add(1, std::memory_order_relaxed);
     return local;
+}
+// One text for every rank, from the rank with the lowest `key`: each rank passes its candidate
+// (key = e.g. the lowest global id among its bad particles, text = that one's description) or
+// noMessageKey and an empty text when it has none; every rank returns the text of the lowest key
+// (empty when no rank has one). Keys must differ between ranks that offer a text (global ids do).
+// So that an error found on some ranks is thrown with the same words on all. An MPI build
+// replaces the body: MPI_Allreduce with MPI_MINLOC on (key, rank), then MPI_Bcast of the text's
+// length and characters from the winning rank. On one process the candidate is the answer.
+inline constexpr std::int64_t noMessageKey = std::numeric_limits<std::int64_t>::max();
+inline std::string globalFirstMessage(std::int64_t key, std::string text) {
+    globalReductionCount.fetch_add(1, std::memory_order_relaxed);
+    (void)key;
+    return text;
 }
 
 struct LocalReduce {
@@ -136,6 +152,10 @@ struct GlobalReduce {
     template <class Term>
     static double min(std::size_t n, Term&& term) {
         return globalMin(LocalReduce::min(n, std::forward<Term>(term)));
+    }
+    // The text of the lowest key over every rank (globalFirstMessage above).
+    static std::string firstMessage(std::int64_t key, std::string text) {
+        return globalFirstMessage(key, std::move(text));
     }
 };
 

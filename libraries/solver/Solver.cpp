@@ -57,6 +57,14 @@ void Solver::checkPositiveMassAndDensity(const ParticleSetBase& particles, const
                              " and density " + std::to_string(density[i]) + ": both must be positive");
 }
 
+std::size_t Solver::ownedParticles() const {
+    return const_cast<Solver*>(this)->particles().ownedCount();
+}
+
+const std::vector<std::int64_t>& Solver::globalIds() const {
+    return fields().requireField<std::int64_t>("globalId");
+}
+
 std::size_t Solver::phaseIndex(std::string_view name) {
     for (std::size_t k = 0; k < phases_.size(); ++k)
         if (phases_[k].first == name) return k;

@@ -25,6 +25,7 @@
 #include "particles/ParticleSet.hpp"
 #include "particles/TimeDirectory.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <deque>
 #include <sstream>
@@ -119,20 +120,16 @@ protected:
         for (auto name : names) phaseIndex(name);
     }
 
-    // The state check every rank agrees on: the bad particles (bad(i) for i < n) are counted
-    // with a global sum, so that when any rank has one every rank throws (a throw only where the
-    // bad particle lives would leave the others waiting in their next collective). The message
-    // is "phase <phase>, step <k>, t = <t>: " + describe(i, count) for the first bad particle
-    // here, or a pointer to the ranks that have them.
+    // The state check every rank agrees on: the bad owned particles (bad(i) for i < n; ghosts,
+    // images of particles owned here or on another rank, are judged where they are owned) are
+    // counted with a global sum, so that when any rank has one every rank throws (a throw only
+    // where the bad particle lives would leave the others waiting in their next collective).
+    // Every rank throws the same text, "phase <phase>, step <k>, t = <t>: " + describe(i, count),
+    // where i is the bad particle of lowest global id on any rank, described by the rank that
+    // owns it (GlobalReduce::firstMessage): the same particle whatever the ranks and whatever the
+    // order of particles in memory (which sorting, appending and removing change).
     template <class Bad, class Describe>
-    void checkState(std::string_view phaseName, std::size_t n, Bad&& bad, Describe&& describe) const {
-        const double count = globalCount(n, bad);
-        if (count == 0) return;
-        for (std::size_t i = 0; i < n; ++i)
-            if (bad(i)) throw RunError(statePrefix(phaseName) + describe(i, count));
-        throw RunError(statePrefix(phaseName) + std::to_string(std::int64_t(count)) +
-                       " particles on other processes have left the valid state (their messages say which)");
-    }
+    void checkState(std::string_view phaseName, std::size_t n, Bad&& bad, Describe&& describe) const;
 
     SolverRun& run_;
 
@@ -143,6 +140,8 @@ private:
     // reduction: every rank calls it, bad particles or not).
     template <class Bad>
     static double globalCount(std::size_t n, Bad& bad);
+    std::size_t ownedParticles() const;
+    const std::vector<std::int64_t>& globalIds() const;
 
     std::deque<Dictionary> opened_;  // a deque: references to its elements stay valid
     std::vector<std::pair<std::string, double>> phases_;
@@ -155,4 +154,22 @@ private:
 template <class Bad>
 double mfdyn::Solver::globalCount(std::size_t n, Bad& bad) {
     return GlobalReduce::sum<double>(n, [&](std::size_t i) { return bad(i) ? 1.0 : 0.0; });
+}
+
+template <class Bad, class Describe>
+void mfdyn::Solver::checkState(std::string_view phaseName, std::size_t n, Bad&& bad,
+                               Describe&& describe) const {
+    n = std::min(n, ownedParticles());
+    const double count = globalCount(n, bad);
+    if (count == 0) return;
+    // This rank's candidate, its bad particle of lowest global id; only it is described (the
+    // descriptions of the others would be thrown away). Two collectives in all, on every rank.
+    const std::vector<std::int64_t>& id = globalIds();
+    std::size_t first = n;
+    for (std::size_t i = 0; i < n; ++i)
+        if ((first == n || id[i] < id[first]) && bad(i)) first = i;
+    std::string text;
+    if (first < n) text = describe(first, count);
+    throw RunError(statePrefix(phaseName) +
+                   GlobalReduce::firstMessage(first < n ? id[first] : noMessageKey, std::move(text)));
 }
