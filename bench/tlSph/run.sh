@@ -27,7 +27,7 @@ loadStart=$(cut -d' ' -f1-3 /proc/loadavg)
 raw=$WORK/raw.tsv
 : >"$raw"
 
-# Steps per twisting-column run: enough work to time, a few minutes in all. dt = alphaCFL h / c_p is
+# Steps per twisting-column run: enough work to time, a few minutes in all. dt = maxCo h / c_p is
 # about 1.21e-3 / (n - 1) s on the n x (6(n-1)+1) x n lattice (3.02e-4 s at 5 x 25 x 5), so endTime
 # = steps x that; the steps actually taken are read from the log.
 stepsFor() { if [ "$1" -le 7 ]; then echo 1000; elif [ "$1" -le 13 ]; then echo 400; else echo 200; fi; }

@@ -120,6 +120,7 @@ void Time::readControls(const Dictionary& dict) {
     fixedDeltaT_ = positive(dict, "deltaT", dict.get<double>("deltaT"));
     adjustTimeStep_ = dict.getOrDefault<bool>("adjustTimeStep", false);
     maxCo_ = positive(dict, "maxCo", dict.getOrDefault<double>("maxCo", 1.0));
+    maxCoGiven_ = dict.found("maxCo");
     maxDeltaT_ = positive(dict, "maxDeltaT", dict.getOrDefault<double>("maxDeltaT", 1e300));
     // A step so small that the run could not end (1e10 steps over the run by default) is a
     // collapse, not a slow run: huge accelerations or a tiny length scale used to run forever.

@@ -68,6 +68,9 @@ public:
     const std::string& timeName() const { return timeName_; }
     std::string nameOf(double t) const;
     double maxCo() const { return maxCo_; }
+    // maxCo as the controlDict gives it, or the method's own default when it gives none (tlSph's
+    // 0.3; maxCo() alone defaults to 1).
+    double maxCo(double methodDefault) const { return maxCoGiven_ ? maxCo_ : methodDefault; }
     bool adjustTimeStep() const { return adjustTimeStep_; }
     int purgeWrite() const { return purgeWrite_; }
     int writePrecision() const { return writePrecision_; }
@@ -105,6 +108,7 @@ private:
     double fixedDeltaT_ = 0;
     bool adjustTimeStep_ = false;
     double maxCo_ = 1;
+    bool maxCoGiven_ = false;
     double maxDeltaT_ = 0;
     double minDeltaT_ = 0;
     WriteControl writeControl_ = WriteControl::timeStep;

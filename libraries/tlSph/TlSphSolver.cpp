@@ -22,6 +22,7 @@
 // strain H_zz = det F_2D exactly), and the laws see 3x3 tensors.
 #include "tlSph/TlSphSolver.hpp"
 
+#include "core/KeywordSchema.hpp"
 #include "core/Log.hpp"
 #include "core/Parallel.hpp"
 #include "solver/InitialState.hpp"
@@ -80,7 +81,6 @@ TlSphSolver<Dim>::TlSphSolver(SolverRun& run)
     projectMomentum_ = readSwitch(projection, "momentum");
     projectDissipation_ = readSwitch(projection, "dissipation");
     projectJacobian_ = readSwitch(projection, "jacobian");
-    alphaCFL_ = properties_.getOrDefault<double>("alphaCFL", 0.3);
     {
         const std::string speed = properties_.getOrDefault<std::string>("waveSpeed", "current");
         if (speed != "current" && speed != "reference")
@@ -88,7 +88,17 @@ TlSphSolver<Dim>::TlSphSolver(SolverRun& run)
                                     "'" + speed + "' is not valid; valid choices: current | reference");
         currentWaveSpeed_ = speed == "current";
     }
-    if (!(alphaCFL_ > 0 && alphaCFL_ <= 1)) throw properties_.error("alphaCFL", "alphaCFL must be in (0, 1]");
+    // One Courant keyword for every method: controlDict's maxCo (tlSph's default 0.3 when the
+    // controlDict gives none, the paper's alpha_CFL). The old tlSphProperties keyword is refused
+    // at its line rather than silently ignored.
+    if (properties_.found("alphaCFL"))
+        throw properties_.error(
+            "alphaCFL", "alphaCFL is now maxCo in system/controlDict: move the value there as `maxCo ...;`");
+    if (!(courant() <= 1))
+        throw run.controlDict().error("maxCo",
+                                      "tlSph needs maxCo in (0, 1] (the TVD RK2 is unstable above "
+                                      "1), found " +
+                                          formatKeywordNumber(courant()));
     if (properties_.found("gravity")) gravity_ = properties_.get<Vector<Dim>>("gravity");
     readMaterials();
     initialiseFields();
@@ -248,11 +258,11 @@ void TlSphSolver<Dim>::initialiseFields() {
       << (projectMomentum_ ? "yes" : "no") << ", dissipation " << (projectDissipation_ ? "yes" : "no")
       << ", jacobian " << (projectJacobian_ ? "yes" : "no");
     Log::info(s.str());
-    const double floor = alphaCFL_ * alphaCFL_ * alphaCFL_ / 8;
+    const double floor = courant() * courant() * courant() / 8;
     if (dissipation_.momentum4 > 0 && dissipation_.momentum4 <= floor)
         Log::warning(
             "JST momentum eps4 " + std::to_string(dissipation_.momentum4) +
-            " is at or below alphaCFL^3/8 = " + std::to_string(floor) +
+            " is at or below maxCo^3/8 = " + std::to_string(floor) +
             ": the RK2 scheme is anti-diffusive at short wavelengths (doc/methods/tl-jst-sph.md App. C)");
 }
 
@@ -520,7 +530,7 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
 
 template <int Dim>
 TimeStepVote TlSphSolver<Dim>::stableTimeStep() {
-    if (!currentWaveSpeed_) return {alphaCFL_ * spacing_ / cpMax_, "CFL (alphaCFL h / c_p)"};
+    if (!currentWaveSpeed_) return {courant() * spacing_ / cpMax_, "CFL (maxCo h / c_p)"};
     // In the reference configuration a deformed body carries waves faster than c_p: the
     // volumetric stiffness enters the acoustic tensor as kappa (H N)(H N)^T / rho0 and the shear
     // part as mu (F^T F)-scaled terms, so the reference wave speed grows like the largest
@@ -536,9 +546,9 @@ TimeStepVote TlSphSolver<Dim>::stableTimeStep() {
         return std::sqrt(std::max(f.eigenvalues().maxCoeff(), h.eigenvalues().maxCoeff()));
     });
     const double factor = std::max(1.0, stretch);
-    return {alphaCFL_ * spacing_ / (cpMax_ * factor),
-            factor > 1.0001 ? "CFL (alphaCFL h / c_p, deformed: c_p x " + std::to_string(factor) + ")"
-                            : std::string("CFL (alphaCFL h / c_p)")};
+    return {courant() * spacing_ / (cpMax_ * factor),
+            factor > 1.0001 ? "CFL (maxCo h / c_p, deformed: c_p x " + std::to_string(factor) + ")"
+                            : std::string("CFL (maxCo h / c_p)")};
 }
 
 template <int Dim>
@@ -614,10 +624,11 @@ void TlSphSolver<Dim>::checkState(const char* phaseName) const {
         if (!(jacobian(i) > 0) && std::isfinite(jacobian(i)))
             s << "The deformation has inverted the particle (J <= 0): hourglass modes or a too coarse "
                  "discretisation of a large local deformation. Raise the momentum eps4 of the JST "
-                 "dissipation, use formulation pFJ near incompressibility, or reduce alphaCFL.";
+                 "dissipation, use formulation pFJ near incompressibility, or reduce maxCo "
+                 "(system/controlDict).";
         else
-            s << "The state is no longer finite: the step is unstable (alphaCFL " << alphaCFL_
-              << "; JST eps4 must exceed alphaCFL^3/8), or a boundary condition drives the body "
+            s << "The state is no longer finite: the step is unstable (maxCo " << courant()
+              << "; JST eps4 must exceed maxCo^3/8), or a boundary condition drives the body "
                  "faster than the material can carry.";
         return s.str();
     });

@@ -17,12 +17,13 @@
 //                                                // (default correctedKernel under lagrangeMultiplier)
 //     dissipation { type jst; momentum (0 0.125); jacobian (0 0); }   // tlDissipation family
 //     projection  { momentum yes; dissipation yes; jacobian yes; }    // the conservation projections
-//     alphaCFL    0.3;                           // dt = alphaCFL h_min / c_p,max
 //     waveSpeed   current;                       // c_p scaled by the largest stretch of F, H (or reference)
 //     gravity     (0 0 0);                       // body force per unit mass (optional)
 //     mirrorGhosts yes;                          // mirror the body across symmetry/skew planes
 //     essentialBoundaryConditions direct;        // or lagrangeMultiplier (App. B; mirrorGhosts no)
 //     initialState { type swingingCube; amplitude 5e-4; }   // optional, applied at a fresh start
+//
+// system/controlDict: maxCo 0.3;                 // dt = maxCo h_min / c_p,max (default 0.3 here)
 //
 // constant/materialProperties: materials { name { rho0 ..; youngsModulus ..; poissonRatio ..;
 //                                                 constitutiveLaw { type neoHookean; } } }
@@ -85,6 +86,8 @@ private:
     void computeRates(const std::vector<Vector<Dim>>& xTilde, double t);
     void checkState(const char* phase) const;
     Tensor<3> cofactor3(std::size_t i) const;
+    // controlDict's maxCo, or the method's 0.3 (Lee et al. 2016's alpha_CFL) when it gives none.
+    double courant() const { return time().maxCo(0.3); }
 
     std::unique_ptr<ParticleSet<Dim>> owner_;
     ParticleSet<Dim>* particles_;
@@ -103,7 +106,6 @@ private:
     std::unique_ptr<LagrangeMultiplierProjection<Dim>> essential_;
     double essentialTime_ = 0;
     bool projectMomentum_ = true, projectDissipation_ = true, projectJacobian_ = true;
-    double alphaCFL_ = 0.3;
     bool currentWaveSpeed_ = true;
     double spacing_ = 0, h_ = 0, cpMax_ = 0;
     Vector<Dim> gravity_ = Vector<Dim>::Zero();
