@@ -39,9 +39,11 @@ if command -v gnuplot > /dev/null; then
     done
 fi
 
-# From scratch in another directory: the same norms (a deterministic solver, one thread).
+# From scratch in another directory, two variants side by side (-jobs 2): the same norms (a
+# deterministic solver, one thread each), so running side by side changes nothing but the clock.
 d=$(newCase again)
-mfStudy -case "$d" > "$d/log.mfStudy" 2>&1 || fail "second study failed"
+mfStudy -case "$d" -jobs 2 > "$d/log.mfStudy" 2>&1 || fail "second study failed"
+grep -q "2 at a time" "$d/log.mfStudy" || fail "-jobs 2 not taken: $(head -n 1 "$d/log.mfStudy")"
 for v in h0.01 h0.005 h0.0025; do
     for col in riemann/density/L1 riemann/pressure/Linf riemann/velocity/L2; do
         [ "$(field "$csv" $v $col)" = "$(field "$d/study/results.csv" $v $col)" ] ||
