@@ -1,6 +1,7 @@
 #include "solver/Solver.hpp"
 
 #include "boundaryConditions/BoundaryConditionList.hpp"
+#include "core/KeywordSchema.hpp"
 #include "solver/SolverRun.hpp"
 
 #include <filesystem>
@@ -53,8 +54,10 @@ void Solver::checkPositiveMassAndDensity(const ParticleSetBase& particles, const
     const auto& id = particles.requireField<std::int64_t>("globalId");
     for (std::size_t i = 0; i < mass.size(); ++i)
         if (!(mass[i] > 0) || !(density[i] > 0))
-            throw InputError("particle " + std::to_string(id[i]) + " has mass " + std::to_string(mass[i]) +
-                             " and density " + std::to_string(density[i]) + ": both must be positive");
+            // formatKeywordNumber, not std::to_string: a mass of -1e-20 must not read "-0.000000".
+            throw InputError("particle " + std::to_string(id[i]) + " has mass " +
+                             formatKeywordNumber(mass[i]) + " and density " +
+                             formatKeywordNumber(density[i]) + ": both must be positive");
 }
 
 std::size_t Solver::ownedParticles() const {

@@ -161,5 +161,19 @@ TEST(SolverTemplate, ANonPositiveMassIsAnInputErrorNamingTheParticle) {
     fs::remove_all(dir);
 }
 
+TEST(SolverTemplate, ATinyNegativeMassIsShownAsItIs) {
+    // std::to_string wrote -1e-20 as -0.000000, a message that contradicts itself.
+    const fs::path dir = makeCase("tinyMass", "lengthScale 0.1;\n", -1e-20);
+    try {
+        runDrift(dir);
+        FAIL() << "a negative mass must be refused";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("particle 4 has mass -1e-20 and density 1000:"),
+                  std::string::npos)
+            << e.what();
+    }
+    fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace mfdyn
