@@ -4,7 +4,7 @@
 //
 //   G_a   = sum_b V_b (v_b - v_a) (x) g_ab                    grad0(p/rho0), the velocity gradient
 //   T_a   = sum_b V_b [P_b g_ba - P_a g_ab]                   (29c) internal force, ~ -DIV P
-//   dp/dt = -T_a + D(p_a) + E_a,   E_a = rho0 g + (boundary force)/V_a                     (41)
+//   dp/dt = -T_a + D(p_a) + E_a,   E_a = rho0 a(x, t) + (boundary force)/V_a               (41)
 //   dF/dt = G_a,   dH/dt = F_a x G_a,   dJ/dt = H_a : G_a + D(J_a),   dx/dt = v_a
 //   D(U)  = eps2 c_p h L[U] - eps4 c_p h^3 L^2[U],  L[U]_a = sum_b V_b (U_b - U_a) Lap~W_b(X_a)
 //
@@ -25,6 +25,7 @@
 #include "core/KeywordSchema.hpp"
 #include "core/Log.hpp"
 #include "core/Parallel.hpp"
+#include "solver/BodyForce.hpp"
 #include "solver/InitialState.hpp"
 #include "solver/MaterialAssignment.hpp"
 #include "solver/SolverRun.hpp"
@@ -99,7 +100,17 @@ TlSphSolver<Dim>::TlSphSolver(SolverRun& run)
                                       "tlSph needs maxCo in (0, 1] (the TVD RK2 is unstable above "
                                       "1), found " +
                                           formatKeywordNumber(courant()));
-    if (properties_.found("gravity")) gravity_ = properties_.get<Vector<Dim>>("gravity");
+    // Body forces per unit mass a(x, t) come from the shared bodyForce family (solver/BodyForce.hpp),
+    // as for every method; the old tlSph-only `gravity` vector is refused at its line.
+    if (properties_.found("gravity")) {
+        std::string types;
+        for (const auto& name : BodyForce::Selector::names()) types += (types.empty() ? "" : " | ") + name;
+        throw properties_.error("gravity",
+                                "gravity is now the bodyForce sub-dictionary of tlSphProperties: "
+                                "`bodyForce { type uniformGravity; g (...); }` (valid types: " +
+                                    types + ")");
+    }
+    if (const Dictionary* force = properties_.findDict("bodyForce")) bodyForce_ = BodyForce::New(*force, Dim);
     readMaterials();
     initialiseFields();
 }
@@ -506,7 +517,9 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
         boundaries_.addBoundaryForces(*particles_, boundaryForce_, t);
     }
     parallelFor(n, [&](std::size_t a) {
-        Vector<Dim> f = force[a] + rho0_[a] * gravity_;
+        Vector<Dim> bodyAcceleration = Vector<Dim>::Zero();
+        if (bodyForce_) bodyForce_->acceleration(x_[a].data(), t, bodyAcceleration.data());
+        Vector<Dim> f = force[a] + rho0_[a] * bodyAcceleration;
         if (!boundaryForce_.empty()) f += boundaryForce_[a] / V_[a];
         acceleration_[a] = f / rho0_[a];
     });

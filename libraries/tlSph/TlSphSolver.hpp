@@ -18,7 +18,7 @@
 //     dissipation { type jst; momentum (0 0.125); jacobian (0 0); }   // tlDissipation family
 //     projection  { momentum yes; dissipation yes; jacobian yes; }    // the conservation projections
 //     waveSpeed   current;                       // c_p scaled by the largest stretch of F, H (or reference)
-//     gravity     (0 0 0);                       // body force per unit mass (optional)
+//     bodyForce   { type uniformGravity; g (0 -9.81 0); }   // optional: E = rho0 a(x, t)
 //     mirrorGhosts yes;                          // mirror the body across symmetry/skew planes
 //     essentialBoundaryConditions direct;        // or lagrangeMultiplier (App. B; mirrorGhosts no)
 //     initialState { type swingingCube; amplitude 5e-4; }   // optional, applied at a fresh start
@@ -40,6 +40,7 @@
 #include "kernels/Kernel.hpp"
 #include "materials/constitutive/ConstitutiveLaw.hpp"
 #include "meshfreeOperators/ReferenceOperators.hpp"
+#include "solver/BodyForce.hpp"
 #include "solver/Solver.hpp"
 #include "tlSph/Formulation.hpp"
 #include "tlSph/LagrangeMultiplierProjection.hpp"
@@ -108,7 +109,7 @@ private:
     bool projectMomentum_ = true, projectDissipation_ = true, projectJacobian_ = true;
     bool currentWaveSpeed_ = true;
     double spacing_ = 0, h_ = 0, cpMax_ = 0;
-    Vector<Dim> gravity_ = Vector<Dim>::Zero();
+    std::unique_ptr<BodyForce> bodyForce_;  // null without a bodyForce sub-dictionary
     bool plastic_ = false;
 
     std::vector<Vector<Dim>>& x_;
