@@ -25,6 +25,7 @@
 #include "core/KeywordSchema.hpp"
 #include "core/Log.hpp"
 #include "core/Parallel.hpp"
+#include "materials/Embedding.hpp"
 #include "solver/BodyForce.hpp"
 #include "solver/InitialState.hpp"
 #include "solver/MaterialAssignment.hpp"
@@ -42,19 +43,6 @@
 namespace mfdyn {
 
 namespace {
-
-// A Dim x Dim tensor in 3x3, the rest of the diagonal `fill`.
-template <int Dim>
-Tensor<3> embed(const Tensor<Dim>& a, double fill) {
-    Tensor<3> t = Tensor<3>::Identity() * fill;
-    t.template topLeftCorner<Dim, Dim>() = a;
-    return t;
-}
-
-template <int Dim>
-Tensor<Dim> inPlane(const Tensor<3>& a) {
-    return a.template topLeftCorner<Dim, Dim>();
-}
 
 bool readSwitch(const Dictionary* dict, const char* key) {
     return dict ? dict->getOrDefault<bool>(key, true) : true;
@@ -120,15 +108,14 @@ TlSphSolver<Dim>::~TlSphSolver() = default;
 
 template <int Dim>
 void TlSphSolver<Dim>::readMaterials() {
-    const Dictionary& all = materialProperties_.subDict("materials");
-    lawNames_ = materialNames(materialProperties_);
-    for (const auto& name : lawNames_) {
-        const Dictionary& m = all.subDict(name);
-        laws_.push_back(ConstitutiveLaw::New(m.subDict("constitutiveLaw")));
-        plastic_ = plastic_ || laws_.back()->usesPlasticState();
-        Log::info("Material " + name + ": " + laws_.back()->describe());
-    }
-    assignMaterials(*particles_, lawNames_, materialProperties_);
+    // A constitutive law per material, nothing else (an equation of state or a strength law is the
+    // updated-Lagrangian methods' model: refused at its entry); one log line per material.
+    MaterialModels models;
+    models.method = "tlSph";
+    models.constitutiveLaw = ModelUse::required;
+    materials_ = std::make_unique<MaterialSet<Dim>>(materialProperties_, models);
+    plastic_ = materials_->usesPlasticState();
+    assignMaterials(*particles_, materials_->names(), materialProperties_);
     material_ = &particles_->integerField("material");
 }
 
@@ -138,12 +125,13 @@ void TlSphSolver<Dim>::initialiseFields() {
     V_.resize(n);
     checkPositiveMassAndDensity(*particles_, m_, rho0_);
     for (std::size_t i = 0; i < n; ++i) {
-        const double lawRho0 = laws_[(*material_)[i]]->referenceDensity();
+        const double lawRho0 = law((*material_)[i]).referenceDensity();
         if (std::abs(rho0_[i] - lawRho0) > 1e-9 * lawRho0)
             throw materialProperties_.error(
                 "materials", "particle " + std::to_string(particles_->globalId()[i]) + " has density " +
                                  std::to_string(rho0_[i]) + " but its material '" +
-                                 lawNames_[(*material_)[i]] + "' has rho0 " + std::to_string(lawRho0) +
+                                 materials_->names()[(*material_)[i]] + "' has rho0 " +
+                                 std::to_string(lawRho0) +
                                  ": generate the particles with the material's density");
         V_[i] = m_[i] / rho0_[i];
     }
@@ -243,7 +231,7 @@ void TlSphSolver<Dim>::initialiseFields() {
             "Essential boundary conditions by the Lagrange-multiplier projection (Lee et al. 2016 App. B): " +
             std::to_string(essential_->size()) + " constrained particles");
     }
-    for (const auto& law : laws_) cpMax_ = std::max(cpMax_, law->pWaveSpeed());
+    for (std::size_t k = 0; k < materials_->size(); ++k) cpMax_ = std::max(cpMax_, law(k).pWaveSpeed());
 
     // P and the pressure of the initial state, for the first write and the function objects.
     if (formulation_->displacementBased()) computeDisplacementGradient();
@@ -298,7 +286,7 @@ void TlSphSolver<Dim>::computeStress(bool updateState) {
         double epsP = 0;
         ConstitutiveLaw::Fields f;
         f.size = 1, f.F = &F3, f.H = &H3, f.J = &J, f.P = &P3, f.pressure = &pressure;
-        const auto& law = *laws_[(*material_)[i]];
+        const auto& law = this->law((*material_)[i]);
         if (law.usesPlasticState()) {
             const Tensor<Dim> c = (*plasticDeformation_)[i].full();
             cp = SymmTensor<3>::fromFull(embed<Dim>(c, plasticOutOfPlane_ ? (*plasticOutOfPlane_)[i] : 1.0));
@@ -631,7 +619,7 @@ void TlSphSolver<Dim>::checkState(const char* phaseName) const {
         std::ostringstream s;
         s.precision(6);
         s << "particle " << particles_->globalId()[i] << " (reference position " << (*X_)[i].transpose()
-          << ", material " << lawNames_[(*material_)[i]] << ") has J = " << jacobian(i)
+          << ", material " << materials_->names()[(*material_)[i]] << ") has J = " << jacobian(i)
           << ", |v| = " << v_[i].norm() << ", |F| = " << (*F_)[i].norm() << "; " << count
           << " particles affected.\n    ";
         if (!(jacobian(i) > 0) && std::isfinite(jacobian(i)))
@@ -660,7 +648,7 @@ std::optional<double> TlSphSolver<Dim>::internalEnergy() const {
         double epsP = 0;
         ConstitutiveLaw::Fields f;
         f.size = 1, f.F = &F3, f.H = &H3, f.J = &J, f.P = &P3, f.energyDensity = &w[i];
-        const auto& law = *laws_[(*material_)[i]];
+        const auto& law = this->law((*material_)[i]);
         if (law.usesPlasticState()) {
             cp = SymmTensor<3>::fromFull(embed<Dim>((*plasticDeformation_)[i].full(),
                                                     plasticOutOfPlane_ ? (*plasticOutOfPlane_)[i] : 1.0));

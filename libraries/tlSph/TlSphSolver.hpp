@@ -38,7 +38,7 @@
 // (2D) or uniaxial strain (1D): the laws see F embedded in 3x3 with unit out-of-plane stretch.
 #include "boundaryConditions/BoundaryConditionList.hpp"
 #include "kernels/Kernel.hpp"
-#include "materials/constitutive/ConstitutiveLaw.hpp"
+#include "materials/MaterialSet.hpp"
 #include "meshfreeOperators/ReferenceOperators.hpp"
 #include "solver/BodyForce.hpp"
 #include "solver/Solver.hpp"
@@ -87,6 +87,9 @@ private:
     void computeRates(const std::vector<Vector<Dim>>& xTilde, double t);
     void checkState(const char* phase) const;
     Tensor<3> cofactor3(std::size_t i) const;
+    const ConstitutiveLaw& law(std::size_t material) const {
+        return *(*materials_)[material].constitutiveLaw;
+    }
     // controlDict's maxCo, or the method's 0.3 (Lee et al. 2016's alpha_CFL) when it gives none.
     double courant() const { return time().maxCo(0.3); }
 
@@ -98,8 +101,7 @@ private:
     std::unique_ptr<Formulation> formulation_;
     std::unique_ptr<TlDissipation> dissipationModel_;
     TlDissipationCoefficients dissipation_;
-    std::vector<std::unique_ptr<ConstitutiveLaw>> laws_;
-    std::vector<std::string> lawNames_;
+    std::unique_ptr<MaterialSet<Dim>> materials_;  // a constitutive law per material
     std::unique_ptr<ReferenceOperators<Dim>> operators_;
     BoundaryConditionList<Dim> boundaries_;
     // `essentialBoundaryConditions lagrangeMultiplier`: step 9 of Algorithm 1, built for the

@@ -3,6 +3,8 @@
 # spelling runs. A 5^3 swinging cube, a few steps.
 #   alphaCFL (tlSphProperties)  -> maxCo in system/controlDict (one Courant keyword for every method)
 #   maxCo above 1               -> refused (the TVD RK2 is unstable above 1)
+#   an equationOfState in a material (MaterialSet with tlSph's models: a constitutive law only;
+#                                  it used to be ignored)
 source "$(dirname "$0")/common.sh"
 base="$WORK/base"
 copyTutorial swingingCube "$base"
@@ -28,6 +30,8 @@ refused alphaCFL constant/tlSphProperties "^alphaCFL" "alphaCFL is now maxCo in 
     sh -c 'echo "alphaCFL 0.3;" >> constant/tlSphProperties'
 refused maxCoAboveOne system/controlDict "^maxCo" "tlSph needs maxCo in (0, 1]" \
     sed -i "s/^maxCo .*/maxCo 1.5;/" system/controlDict
+refused equationOfState constant/materialProperties "equationOfState {" "tlSph does not use a" \
+    sed -i 's/constitutiveLaw { type linearElastic; }/constitutiveLaw { type linearElastic; }\n        equationOfState { type idealGas; gamma 1.4; }/' constant/materialProperties
 # The new spelling runs, and without maxCo the method's 0.3 applies: the same steps as maxCo 0.3.
 good="$WORK/good"; cp -r "$base" "$good"; run "$good" tlSph
 nomax="$WORK/nomax"; cp -r "$base" "$nomax"; sed -i "/^maxCo /d" "$nomax/system/controlDict"; run "$nomax" tlSph
