@@ -38,6 +38,7 @@ using namespace mfdyn;
 namespace {
 
 constexpr const char* doneMarker = "mfStudy.done";
+constexpr const char* settingsFile = "mfStudy.settings";  // the entries the variant was run with
 constexpr const char* runnerLog = "log.mfStudy";
 
 // ---------------------------------------------------------------- studyDict
@@ -412,6 +413,19 @@ void writeAtomically(const fs::path& path, const std::string& text) {
     fs::rename(tmp, path);
 }
 
+std::string readText(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::string settingsText(const Variant& v) {
+    std::string text;
+    for (const auto& s : v.settings) text += s.path + " " + s.value + "\n";
+    return text;
+}
+
 bool isTimeName(const std::string& name) {
     if (name.empty()) return false;
     char* end = nullptr;
@@ -496,9 +510,16 @@ std::string diagnose(const fs::path& dir, const std::string& application, int st
         while (std::getline(in, line))
             if (line.rfind("Error", 0) == 0 || line.find("FATAL") != std::string::npos) return line;
     }
+    // No error line: the runner's last words (a shell's "command not found", an Allrun's message).
+    std::string last;
+    {
+        std::ifstream in(dir / runnerLog);
+        for (std::string line; std::getline(in, line);)
+            if (!line.empty()) last = line;
+    }
     return (WIFSIGNALED(status) ? "killed by signal " + std::to_string(WTERMSIG(status))
                                 : "exit status " + std::to_string(WEXITSTATUS(status))) +
-           " without an error line; see " + (dir / runnerLog).string();
+           (last.empty() ? " without an error line; see " + (dir / runnerLog).string() : ": " + last);
 }
 
 pid_t launch(const fs::path& dir, const Study& study, const fs::path& binDir, int threadsPerJob) {
@@ -565,7 +586,13 @@ int runVariants(const fs::path& studyDir, const Study& study, std::vector<Outcom
     std::vector<std::size_t> pending;
     for (std::size_t i = 0; i < study.variants.size(); ++i) {
         const fs::path dir = studyDir / study.variants[i].name;
-        if (fs::exists(dir / doneMarker)) {
+        // A finished variant whose entries studyDict has since changed is stale: it runs again.
+        const bool same =
+            fs::exists(dir / settingsFile) && readText(dir / settingsFile) == settingsText(study.variants[i]);
+        if (fs::exists(dir / doneMarker) && !same)
+            std::cout << "    " << study.variants[i].name
+                      << ": its entries changed in studyDict since it ran: rerun\n";
+        if (fs::exists(dir / doneMarker) && same) {
             const auto m = readMarker(dir / doneMarker);
             outcomes[i].finished = true;
             outcomes[i].cpuSeconds = m.count("cpuSeconds") ? m.at("cpuSeconds") : 0;
@@ -593,6 +620,7 @@ int runVariants(const fs::path& studyDir, const Study& study, std::vector<Outcom
                 if (runTool(binDir / "mfDictionary",
                             {(partial / s.file).string(), "-entry", s.key, "-set", s.value}) != 0)
                     throw Error("cannot set " + s.path + " to " + s.value + " in " + partial.string());
+            writeAtomically(partial / settingsFile, settingsText(v));
             fs::rename(partial, dir);
             std::cout << "    " << v.name << ": running" << std::endl;
             running.push_back(
@@ -1008,6 +1036,9 @@ void report(const fs::path& studyDir, const Study& study, const std::vector<Outc
     const std::string plotted = plot(studyDir, measure, lines, h, cpu, error, front);
     md << "\n" << plotted << "\n";
     writeAtomically(studyDir / "results.md", md.str());
+    const auto failed = std::count_if(outcomes.begin(), outcomes.end(),
+                                      [](const Outcome& o) { return !o.diagnosis.empty(); });
+    if (failed) std::cout << failed << " of " << n << " variants failed: their rows give the diagnosis\n";
     std::cout << "Wrote " << (studyDir / "results.csv").string() << " and "
               << (studyDir / "results.md").string() << "\n"
               << plotted << "\n";

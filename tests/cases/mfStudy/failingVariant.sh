@@ -26,5 +26,6 @@ d=$(newCase byHand)
 byHand=$(grep ',riemann/density,' "$d/postProcessing/runSummary/0/runSummary.csv" | cut -d, -f3)
 [ "$(field "$csv" good riemann/density/L1)" = "$byHand" ] || fail "good L1 $(field "$csv" good riemann/density/L1), by hand $byHand"
 grep -q "| noKernel |.*| failed |.*unknown kernel type" "$c/study/results.md" || fail "results.md lacks the diagnosis"
+grep -q "2 of 3 variants failed" "$c/log.mfStudy" || fail "no count of failures: $(cat "$c/log.mfStudy")"
 [ -f "$c/study/noKernel/mfStudy.done" ] && fail "a failed variant was marked finished"
 pass "failing variants reported with their diagnoses; the study went on"

@@ -59,4 +59,12 @@ PATH="$BUILD/bin" mfStudy -case "$c" > "$c/log.report" 2>&1 || fail "report-only
 [ "$(stat -c %Y.%y "$c/study/h0.005/log.impactSph")" = "$before" ] || fail "h0.005 ran again"
 grep -q "gnuplot not found: plots skipped" "$c/log.report" || fail "no word of skipped plots: $(cat "$c/log.report")"
 [ "$(grep -c ',finished,' "$c/study/results.csv")" = 3 ] || fail "report-only rerun lost rows"
+# A changed entry makes the finished variants stale: deltaT 0.03 h reruns every level, and an
+# added level runs alone beside them.
+sed -i 's#^\( *system/controlDict/deltaT *\)0.04;#\10.03;#' "$c/system/studyDict"
+mfStudy -case "$c" > "$c/log.changed" 2>&1 || fail "changed study failed: $(cat "$c/log.changed")"
+[ "$(grep -c 'its entries changed in studyDict since it ran: rerun' "$c/log.changed")" = 3 ] ||
+    fail "changed entries did not rerun the variants: $(cat "$c/log.changed")"
+# 0.2 / (0.03 * 0.01) = 666.7: the last step is cut to land on endTime.
+[ "$(field "$c/study/results.csv" h0.01 steps)" = 667 ] || fail "h0.01 after the change: $(field "$c/study/results.csv" h0.01 steps) steps"
 pass "table reproduced: order in h $printedFit (awk $fit), Richardson $printedRich (awk $rich)"
