@@ -9,6 +9,7 @@
 
 #include "core/Log.hpp"
 #include "core/Parallel.hpp"
+#include "solver/SolverRegistry.hpp"
 #include "solver/SolverRun.hpp"
 
 #include <cmath>
@@ -17,18 +18,25 @@
 namespace mfdyn {
 
 template <int Dim>
+KeywordSchema ParticleFlightSolver<Dim>::keywords() {
+    return KeywordSchema("solver", "particleFlight")
+        .dictionary("bodyForce", "the body force on every particle (a bodyForce type)")
+        .scalar("lengthScale", "m", "the length in the Courant number Co = |v| dt / lengthScale")
+        .greaterThan(0);
+}
+
+template <int Dim>
 ParticleFlightSolver<Dim>::ParticleFlightSolver(SolverRun& run)
     : Solver(run),
       particlesOwner_(adoptParticleSet<Dim>(run.takeParticles())),
       particles_(particlesOwner_.get()),
       properties_(openConstant("particleFlightProperties")),
-      bodyForce_(BodyForce::New(properties_.subDict("bodyForce"), Dim)),
+      bodyForce_(BodyForce::New(keywords().read(properties_).dictionary("bodyForce"), Dim)),
       lengthScale_(properties_.get<double>("lengthScale")),
       x_(particles_->position()),
       v_(particles_->vectorField("velocity")),
       a_(particles_->vectorField("acceleration")) {
     declarePhases({"kickDrift", "bodyForce"});
-    if (!(lengthScale_ > 0)) throw properties_.error("lengthScale", "lengthScale must be positive");
     particles_->scalarField("mass");
     computeAcceleration(run.time().value());
 }
@@ -87,5 +95,8 @@ std::optional<double> ParticleFlightSolver<Dim>::potentialEnergy() const {
 template class ParticleFlightSolver<1>;
 template class ParticleFlightSolver<2>;
 template class ParticleFlightSolver<3>;
+
+MFDYN_REGISTER_SOLVER(ParticleFlightSolver, "particleFlight",
+                      "Particles in free flight under a body force, velocity Verlet");
 
 }  // namespace mfdyn

@@ -26,6 +26,10 @@ class ParticleFlightSolver final : public Solver, public BodyForceSolver {
 public:
     explicit ParticleFlightSolver(SolverRun& run);
 
+    // The keywords of constant/particleFlightProperties (solver/SolverRegistry.hpp).
+    static constexpr const char* propertiesDictionary = "particleFlightProperties";
+    static KeywordSchema keywords();
+
     TimeStepVote stableTimeStep() override;
     void step(double dt) override;
     ParticleSetBase& particles() override { return *particles_; }

@@ -10,7 +10,8 @@ int main(int argc, char** argv) {
         "Updated-Lagrangian SPH for shocks and impact (constant/sphProperties, constant/materialProperties).",
         {},
         {},
-        true};
+        true,
+        "impactSph"};
     return mfdyn::runApplication(argc, argv, info, [](const mfdyn::Arguments& args) {
         return mfdyn::runSolver<mfdyn::SphSolver>(args, "impactSph");
     });

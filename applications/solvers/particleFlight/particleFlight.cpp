@@ -1,8 +1,7 @@
 // particleFlight: particles in free flight under a runtime-selected body force. The framework's
 // proof case (exact answer for uniformGravity); see tutorials/particleFlight/.
-#include "ballistics/ParticleFlightSolver.hpp"
 #include "core/Application.hpp"
-#include "solver/SolverRun.hpp"
+#include "solver/SolverRegistry.hpp"
 
 int main(int argc, char** argv) {
     const mfdyn::ApplicationInfo info{
@@ -10,8 +9,9 @@ int main(int argc, char** argv) {
         "Particles in free flight under a body force (constant/particleFlightProperties), velocity Verlet.",
         {},
         {},
-        true};
+        true,
+        "particleFlight"};
     return mfdyn::runApplication(argc, argv, info, [](const mfdyn::Arguments& args) {
-        return mfdyn::runSolver<mfdyn::ParticleFlightSolver>(args, "particleFlight");
+        return mfdyn::runSolver(args, "particleFlight");  // registered by libmfdyn_ballistics
     });
 }

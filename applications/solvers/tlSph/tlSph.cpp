@@ -11,7 +11,8 @@ int main(int argc, char** argv) {
         "constant/materialProperties).",
         {},
         {},
-        true};
+        true,
+        "tlSph"};
     return mfdyn::runApplication(argc, argv, info, [](const mfdyn::Arguments& args) {
         return mfdyn::runSolver<mfdyn::TlSphSolver>(args, "tlSph");
     });

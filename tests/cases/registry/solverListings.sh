@@ -1,0 +1,45 @@
+# The solver registry seen from the built applications. $1 = build directory.
+#  - each solver application records its method's library as NEEDED: the registration is a
+#    static object there that the program never references, so a linker with --as-needed would
+#    drop the library and the solver would not be found by name;
+#  - `<app> -describe <solver>` gives the solver's dictionary and keywords, and `<app>
+#    -listModels` lists them before every family;
+#  - an unknown name is an error with exit status 1 naming the families.
+set -euo pipefail
+BUILD="$1"
+export PATH="$BUILD/bin:$PATH"
+WORK="$(mktemp -d "${TMPDIR:-/tmp}/mfdyn-test.XXXXXX")"
+trap 'rm -rf "$WORK"' EXIT
+cd "$WORK"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+for pair in particleFlight:libmfdyn_ballistics.so impactSph:libmfdyn_sph.so tlSph:libmfdyn_tlSph.so; do
+    app=${pair%%:*} lib=${pair#*:}
+    readelf -d "$BUILD/bin/$app" | grep -q "NEEDED.*\[$lib\]" ||
+        fail "$app does not record $lib as NEEDED: its solver registration would not be loaded"
+done
+
+# particleFlight: its keywords, from its schema, with their units.
+particleFlight -describe particleFlight > describe.txt 2>&1 || fail "-describe particleFlight failed: $(cat describe.txt)"
+grep -q "^solver particleFlight: " describe.txt || fail "no solver heading: $(cat describe.txt)"
+grep -q "dictionary: constant/particleFlightProperties" describe.txt || fail "no dictionary: $(cat describe.txt)"
+grep -q "lengthScale  \[m\]  required  a real number, > 0" describe.txt || fail "no lengthScale: $(cat describe.txt)"
+grep -q "bodyForce  \[-\]  required  a dictionary" describe.txt || fail "no bodyForce: $(cat describe.txt)"
+
+particleFlight -listModels > list.txt 2>&1 || fail "-listModels failed"
+[ "$(head -n 1 list.txt)" = "solver particleFlight: Particles in free flight under a body force, velocity Verlet" ] ||
+    fail "-listModels does not start with the application's solver: $(head -n 3 list.txt)"
+first=$(grep -n "lengthScale" list.txt | head -n 1 | cut -d: -f1)
+family=$(grep -n "^equationOfState$" list.txt | cut -d: -f1)
+[ -n "$first" ] && [ -n "$family" ] && [ "$first" -lt "$family" ] ||
+    fail "the solver's keywords are not listed before the families: $(head -n 8 list.txt)"
+[ "$(grep -c "lengthScale" list.txt)" = 1 ] || fail "lengthScale listed more than once"
+grep -q "^solver$" list.txt || fail "no solver family in the listing"
+
+# An unknown name: exit status 1, the families listed by their names.
+status=0
+particleFlight -describe solver/particleFlite > bad.txt 2>&1 || status=$?
+[ "$status" = 1 ] || fail "an unknown -describe gave status $status"
+grep -q "no model family or type 'solver/particleFlite'; did you mean 'solver/particleFlight'" bad.txt ||
+    fail "unknown -describe message: $(cat bad.txt)"
+echo "PASS: solver registry listings"
