@@ -42,13 +42,50 @@
 
 namespace mfdyn {
 
-namespace {
-
-bool readSwitch(const Dictionary* dict, const char* key) {
-    return dict ? dict->getOrDefault<bool>(key, true) : true;
+template <int Dim>
+KeywordSchema TlSphSolver<Dim>::projectionKeywords() {
+    return KeywordSchema("solver", "tlSph/projection")
+        .flag("momentum", "project the internal force to zero total force and moment about x~ (eqs. 45-50)")
+        .orDefault(true)
+        .flag("dissipation", "project the momentum dissipation D(p) likewise")
+        .orDefault(true)
+        .flag("jacobian", "remove the volume mean of the Jacobian dissipation D(J) (eq. 51)")
+        .orDefault(true);
 }
 
-}  // namespace
+// constant/tlSphProperties. Every keyword the solver reads is declared here (the defaults are
+// those the solver always had); the models' sub-dictionaries are read by their own families.
+template <int Dim>
+KeywordSchema TlSphSolver<Dim>::keywords() {
+    return KeywordSchema("solver", "tlSph")
+        .dictionary("formulation", "which of p, F, H, J are evolved (a formulation type)")
+        .dictionary("kernel", "the smoothing kernel (a kernel type; support 2h)")
+        .dictionary("dissipation", "the stabilisation D(p), D(J) (a tlDissipation type)")
+        .dictionary("bodyForce", "body force per unit mass a(x, t), E = rho0 a (a bodyForce type)")
+        .optional()
+        .scalar("smoothingLengthRatio", "-", "h = smoothingLengthRatio x spacing")
+        .greaterThan(0)
+        .orDefault(1.3)
+        .scalar("spacing", "m", "the particle spacing h_min (default: the largest V^(1/d))")
+        .greaterThan(0)
+        .optional()
+        .word("gradient", {"corrected", "uncorrected", "correctedKernel"},
+              "the reference gradient (default corrected; correctedKernel under lagrangeMultiplier)")
+        .optional()
+        .dictionary("projection", "the conservation projections of the rates (all on by default)")
+        .optional()
+        .nested(&TlSphSolver<Dim>::projectionKeywords)
+        .word("waveSpeed", {"current", "reference"},
+              "the CFL wave speed: c_p scaled by the largest stretch of F, H (current), or c_p")
+        .orDefault("current")
+        .flag("mirrorGhosts", "mirror the body across its symmetryPlane and skewSymmetricPlane conditions")
+        .orDefault(true)
+        .word("essentialBoundaryConditions", {"direct", "lagrangeMultiplier"},
+              "fixed and prescribed motion imposed on p and dp/dt (direct) or by the App. B projection")
+        .orDefault("direct")
+        .dictionary("initialState", "a state applied at a fresh start (an initialState type)")
+        .optional();
+}
 
 template <int Dim>
 TlSphSolver<Dim>::TlSphSolver(SolverRun& run)
@@ -57,26 +94,23 @@ TlSphSolver<Dim>::TlSphSolver(SolverRun& run)
       particles_(owner_.get()),
       properties_(openConstant("tlSphProperties")),
       materialProperties_(openConstant("materialProperties")),
-      kernel_(Kernel::New(properties_.subDict("kernel"))),
-      formulation_(Formulation::New(properties_.subDict("formulation"))),
-      dissipationModel_(TlDissipation::New(properties_.subDict("dissipation"))),
+      settings_(keywords().read(properties_)),
+      kernel_(Kernel::New(settings_.dictionary("kernel"))),
+      formulation_(Formulation::New(settings_.dictionary("formulation"))),
+      dissipationModel_(TlDissipation::New(settings_.dictionary("dissipation"))),
       dissipation_(dissipationModel_->coefficients()),
       x_(particles_->position()),
       v_(particles_->vectorField("velocity")),
       m_(requireScalarField(*particles_, "mass", "particle masses")),
       rho0_(requireScalarField(*particles_, "density", "the reference density rho0")) {
     declarePhases({"computeStress", "computeRates", "dissipation", "projections", "integrate"});
-    const Dictionary* projection = properties_.findDict("projection");
-    projectMomentum_ = readSwitch(projection, "momentum");
-    projectDissipation_ = readSwitch(projection, "dissipation");
-    projectJacobian_ = readSwitch(projection, "jacobian");
-    {
-        const std::string speed = properties_.getOrDefault<std::string>("waveSpeed", "current");
-        if (speed != "current" && speed != "reference")
-            throw properties_.error("waveSpeed",
-                                    "'" + speed + "' is not valid; valid choices: current | reference");
-        currentWaveSpeed_ = speed == "current";
+    if (settings_.given("projection")) {
+        const KeywordValues& projection = settings_.nested("projection");
+        projectMomentum_ = projection.flag("momentum");
+        projectDissipation_ = projection.flag("dissipation");
+        projectJacobian_ = projection.flag("jacobian");
     }
+    currentWaveSpeed_ = settings_.word("waveSpeed") == "current";
     // One Courant keyword for every method: controlDict's maxCo (tlSph's default 0.3 when the
     // controlDict gives none, the paper's alpha_CFL). The old tlSphProperties keyword is refused
     // at its line rather than silently ignored.
@@ -98,7 +132,7 @@ TlSphSolver<Dim>::TlSphSolver(SolverRun& run)
                                 "`bodyForce { type uniformGravity; g (...); }` (valid types: " +
                                     types + ")");
     }
-    if (const Dictionary* force = properties_.findDict("bodyForce")) bodyForce_ = BodyForce::New(*force, Dim);
+    if (settings_.given("bodyForce")) bodyForce_ = BodyForce::New(settings_.dictionary("bodyForce"), Dim);
     readMaterials();
     initialiseFields();
 }
@@ -143,9 +177,10 @@ void TlSphSolver<Dim>::initialiseFields() {
     F_ = &particles_->tensorField("deformationGradient");
     if (!hadF) std::fill(F_->begin(), F_->end(), Tensor<Dim>::Identity());
     if (fresh)
-        if (const Dictionary* init = properties_.findDict("initialState")) {
-            InitialState<Dim>::New(*init)->apply(*particles_, *X_);
-            Log::info("Initial state: " + init->get<std::string>("type"));
+        if (settings_.given("initialState")) {
+            const Dictionary& init = settings_.dictionary("initialState");
+            InitialState<Dim>::New(init)->apply(*particles_, *X_);
+            Log::info("Initial state: " + init.get<std::string>("type"));
         }
     if (formulation_->evolvesH()) {
         const bool had = particles_->hasField("cofactor");
@@ -179,10 +214,11 @@ void TlSphSolver<Dim>::initialiseFields() {
     // Spacing (h_min of the paper) and smoothing length.
     double largest = 0;
     for (double v : V_) largest = std::max(largest, v);
-    spacing_ = properties_.getOrDefault<double>("spacing", std::pow(largest, 1.0 / Dim));
-    if (!(spacing_ > 0)) throw properties_.error("spacing", "the particle spacing must be positive");
-    const double ratio = properties_.getOrDefault<double>("smoothingLengthRatio", 1.3);
-    if (!(ratio > 0)) throw properties_.error("smoothingLengthRatio", "must be positive");
+    spacing_ = settings_.optionalScalar("spacing").value_or(std::pow(largest, 1.0 / Dim));
+    if (!(spacing_ > 0))  // the default of a set with no volume (the schema checks a given one)
+        throw properties_.error("", "the particle spacing " + formatKeywordNumber(spacing_) +
+                                        " from the largest particle volume is not positive: give `spacing`");
+    const double ratio = settings_.scalar("smoothingLengthRatio");
     h_ = ratio * spacing_;
     // For sampling and the interpolating function objects (sample, probes, swingingCubeError).
     auto& smoothingLength = particles_->scalarField("smoothingLength");
@@ -193,12 +229,7 @@ void TlSphSolver<Dim>::initialiseFields() {
     makeMirrorGhosts();
     typename ReferenceOperators<Dim>::Options options;
     options.laplacian = true;
-    const std::string essential =
-        properties_.getOrDefault<std::string>("essentialBoundaryConditions", "direct");
-    if (essential != "direct" && essential != "lagrangeMultiplier")
-        throw properties_.error(
-            "essentialBoundaryConditions",
-            "'" + essential + "' is not valid; valid choices: direct | lagrangeMultiplier");
+    const std::string& essential = settings_.word("essentialBoundaryConditions");
     const bool lagrangeMultiplier = essential == "lagrangeMultiplier" && !boundaries_.empty();
     if (lagrangeMultiplier && !ghosts_.empty())
         throw properties_.error(
@@ -215,8 +246,8 @@ void TlSphSolver<Dim>::initialiseFields() {
     const GradientCorrection defaultGradient =
         lagrangeMultiplier ? GradientCorrection::correctedKernel : GradientCorrection::corrected;
     options.gradient =
-        properties_.found("gradient") ? gradientCorrectionFromName(properties_, "gradient") : defaultGradient;
-    if (!properties_.found("gradient"))
+        settings_.given("gradient") ? gradientCorrectionFromName(properties_, "gradient") : defaultGradient;
+    if (!settings_.given("gradient"))
         Log::info("gradient " + gradientCorrectionName(options.gradient) + " (default" +
                   (lagrangeMultiplier ? " with essentialBoundaryConditions lagrangeMultiplier)" : ")"));
     Stopwatch watch;
@@ -307,7 +338,7 @@ void TlSphSolver<Dim>::computeStress(bool updateState) {
 
 template <int Dim>
 void TlSphSolver<Dim>::makeMirrorGhosts() {
-    if (!properties_.getOrDefault<bool>("mirrorGhosts", true)) return;
+    if (!settings_.flag("mirrorGhosts")) return;
     const auto mirrors = boundaries_.referenceMirrors();
     if (mirrors.empty()) return;
     // Deep enough that a ghost within the support of a real particle has its whole support

@@ -56,6 +56,11 @@ template <int Dim>
 class TlSphSolver final : public Solver {
 public:
     explicit TlSphSolver(SolverRun& run);
+    // The keywords of constant/tlSphProperties (-describe, doc/models/solver/tlSph.md) and of its
+    // `projection` sub-dictionary.
+    static KeywordSchema keywords();
+    static KeywordSchema projectionKeywords();
+    static constexpr const char* propertiesDictionary = "tlSphProperties";
     ~TlSphSolver() override;
 
     TimeStepVote stableTimeStep() override;
@@ -97,6 +102,7 @@ private:
     ParticleSet<Dim>* particles_;
     const Dictionary& properties_;
     const Dictionary& materialProperties_;
+    const KeywordValues settings_;  // tlSphProperties read through keywords()
     std::unique_ptr<Kernel> kernel_;
     std::unique_ptr<Formulation> formulation_;
     std::unique_ptr<TlDissipation> dissipationModel_;
