@@ -10,6 +10,7 @@
 // Everything in studyDict is checked against the case before anything is written or run.
 #include "StudyFit.hpp"
 #include "core/Application.hpp"
+#include "core/CaseLock.hpp"
 #include "core/Dictionary.hpp"
 
 #include <algorithm>
@@ -238,6 +239,17 @@ Study readStudy(const fs::path& root, std::optional<int> jobsOption) {
     if (study.application.empty())
         throw InputError(control.where(), "",
                          "controlDict names no application: mfStudy runs it and reads log.<application>");
+    // The measure's function object must be one the case runs (its fields are known only after a run).
+    if (!study.measure.empty()) {
+        const std::string object = splitPath(study.measure).front();
+        std::vector<std::string> objects;
+        if (const Dictionary* functions = control.findDict("functions")) objects = functions->keys();
+        if (std::find(objects.begin(), objects.end(), object) == objects.end())
+            throw dict.error(
+                "error", "'" + object + "' is not a function object of system/controlDict; valid choices: " +
+                             (objects.empty() ? std::string("(none: controlDict has no functions)")
+                                              : joined(objects)));
+    }
 
     // The axes that are not resolution, as (label, settings) choices; their product times the levels.
     struct Choice {
@@ -899,6 +911,15 @@ void report(const fs::path& studyDir, const Study& study, const std::vector<Outc
     std::string measure = study.measure;
     if (measure.empty() && !normOrder.empty()) measure = normOrder.front();
     if (measure.empty() && !referenceOrder.empty()) measure = referenceOrder.front();
+    const bool measured =
+        std::find(normOrder.begin(), normOrder.end(), measure) != normOrder.end() ||
+        std::find(referenceOrder.begin(), referenceOrder.end(), measure) != referenceOrder.end();
+    if (!measure.empty() && !measured && (!normOrder.empty() || !referenceOrder.empty())) {
+        std::vector<std::string> all(normOrder);
+        all.insert(all.end(), referenceOrder.begin(), referenceOrder.end());
+        std::cout << "Warning: no run reported studyDict's error '" << measure
+                  << "'; the runs report: " << joined(all) << "\n";
+    }
 
     const std::size_t n = study.variants.size();
     std::vector<double> h(n, NAN), cpu(n, NAN), error(n, NAN);
@@ -1110,6 +1131,8 @@ int main(int argc, char** argv) {
         }
         const fs::path studyDir = root / "study";
         fs::create_directories(studyDir);
+        // One study of a case at a time: two would run the same variants into the same directories.
+        const CaseLock lock(studyDir, "mfStudy");
         std::vector<Outcome> outcomes(study.variants.size());
         const int stopped = runVariants(studyDir, study, outcomes);
         report(studyDir, study, outcomes);

@@ -69,4 +69,6 @@ job 2;" 2 "unknown keyword 'job' (did you mean 'jobs'?); valid choices: run | jo
 
 expectError badRun "$scale
 run sometimes;" 2 "valid choices: auto | allrun | application"
+expectError unknownFunctionObject "$scale
+error riemman/density/L1;" 2 "'riemman' is not a function object of system/controlDict; valid choices: riemann"
 pass "every bad studyDict stopped before any run with its file, line and choices"

@@ -20,6 +20,10 @@ pid=$!
 for _ in $(seq 1 3000); do [ -f "$c/study/h0.01/mfStudy.done" ] && [ -f "$c/study/h0.005/log.particleGen" ] && break; sleep 0.02; done
 [ -f "$c/study/h0.005/log.particleGen" ] || { kill -9 $pid; fail "the second variant never started: $(cat "$c/log.first")"; }
 grep -q "run by the case's Allrun" "$c/log.first" || fail "the study did not use the Allrun: $(cat "$c/log.first")"
+# A second study of the same case while this one runs is refused, naming the holder.
+status=0; mfStudy -case "$c" > "$c/log.second" 2>&1 || status=$?
+[ "$status" = 1 ] && grep -q "mfStudy" "$c/log.second" && grep -q "$pid" "$c/log.second" ||
+    { kill -9 $pid; fail "a second study was not refused (exit $status): $(cat "$c/log.second")"; }
 kill -TERM $pid
 status=0; wait $pid || status=$?
 [ "$status" = 143 ] || fail "stopped study exited $status, expected 143 (128 + SIGTERM): $(cat "$c/log.first")"
