@@ -6,10 +6,13 @@
 //   dissipation { type monaghanGingold; alpha 1; beta 2; balsara no; density (0.5 0); }  // + mass flux
 //   dissipation { type none; }
 //
-// Each model's equations and keywords are in its own .cpp (RiemannDissipation,
-// MonaghanGingoldViscosity, NoDissipation) and in doc/models/dissipation/. The pair terms are
-// evaluated inside SphSolver's force loop, not by a virtual call per pair: a model states its
-// parameters (DissipationParameters) and the solver's loop applies them.
+// A model is behaviour, not flags: it carries its own pair terms (viscous force, mass flux,
+// heating), and its equations and keywords are in its own .cpp (RiemannDissipation,
+// MonaghanGingoldViscosity, NoDissipation) and in doc/models/dissipation/. Evaluated inside the
+// solver's fused pair loop by double dispatch (SphPairLoop.hpp): one virtual computeRates() a rate
+// evaluation, which runs the loop compiled with the model's inline pair terms, so a model in a
+// user library costs no virtual call per pair either. One overload per dimension: the solver is
+// SphSolver<Dim> for Dim 1, 2, 3, the family one registry.
 #include "core/KeywordSchema.hpp"
 #include "core/Registry.hpp"
 
@@ -17,14 +20,8 @@
 
 namespace mfdyn {
 
-struct DissipationParameters {
-    enum class Kind { none, riemann, monaghanGingold } kind = Kind::none;
-    double av = 0, bv = 0, arho = 0, brho = 0, ae = 0, be = 0;
-    bool alternativeSignal = false;
-    bool allPairs = false;
-    double alpha = 0, beta = 0;
-    bool balsara = false;
-};
+template <int Dim>
+struct SphPairLoop;
 
 class Dissipation {
 public:
@@ -34,9 +31,12 @@ public:
 
     explicit Dissipation(const Dictionary&) {}
     virtual ~Dissipation() = default;
-    // The pair terms are evaluated inside the solver's force loop (a virtual call per pair would
-    // cost more than the terms); a model states its parameters.
-    virtual DissipationParameters parameters() const = 0;
+
+    // The rates of this step's pairs with the model's terms: defined by each model as
+    // `{ loop.run(*this); }` (SphPairLoop.hpp).
+    virtual void computeRates(SphPairLoop<1>& loop) = 0;
+    virtual void computeRates(SphPairLoop<2>& loop) = 0;
+    virtual void computeRates(SphPairLoop<3>& loop) = 0;
 };
 
 }  // namespace mfdyn

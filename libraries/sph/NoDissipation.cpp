@@ -12,6 +12,16 @@ NoDissipation::NoDissipation(const Dictionary& dict) : Dissipation(dict) {
     keywords().read(dict);
 }
 
+void NoDissipation::computeRates(SphPairLoop<1>& loop) {
+    loop.run(*this);
+}
+void NoDissipation::computeRates(SphPairLoop<2>& loop) {
+    loop.run(*this);
+}
+void NoDissipation::computeRates(SphPairLoop<3>& loop) {
+    loop.run(*this);
+}
+
 MFDYN_REGISTER(Dissipation, NoDissipation, "none", "no artificial dissipation");
 
 }  // namespace mfdyn

@@ -10,8 +10,8 @@
 //                        conduction sign corrected to be diffusive: doc/methods/sph-impact.md §12 item 6)
 //
 // Each (a, b) pair is given per variable: a the coefficient, b the factor of the relative
-// velocity in the signal velocity; a = 0 switches that term off. The terms are applied in
-// SphSolver's force loop from parameters().
+// velocity in the signal velocity; a = 0 switches that term off. The terms are added to the
+// pair sums inside SphSolver's fused pair loop (the member pair(); SphPairLoop.hpp).
 #include "sph/RiemannDissipation.hpp"
 
 namespace mfdyn {
@@ -38,15 +38,49 @@ KeywordSchema RiemannDissipation::keywords() {
 
 RiemannDissipation::RiemannDissipation(const Dictionary& dict) : Dissipation(dict) {
     const KeywordValues v = keywords().read(dict);
-    p_.kind = DissipationParameters::Kind::riemann;
-    p_.av = v.vector("velocity")[0];
-    p_.bv = v.vector("velocity")[1];
-    p_.arho = v.vector("density")[0];
-    p_.brho = v.vector("density")[1];
-    p_.ae = v.vector("energy")[0];
-    p_.be = v.vector("energy")[1];
-    p_.alternativeSignal = v.word("signal") == "alternative";
-    p_.allPairs = v.word("pairs") == "all";
+    k_.av = v.vector("velocity")[0];
+    k_.bv = v.vector("velocity")[1];
+    k_.arho = v.vector("density")[0];
+    k_.brho = v.vector("density")[1];
+    k_.ae = v.vector("energy")[0];
+    k_.be = v.vector("energy")[1];
+    k_.alternativeSignal = v.word("signal") == "alternative";
+    k_.allPairs = v.word("pairs") == "all";
+    massFlux_ = k_.arho > 0;
+}
+
+// One pair, approaching (v_ij·r̂ ≤ 0) or any with `pairs all`: Eqs. 4.22/4.24, 4.26-4.28 above.
+template <int Dim>
+void RiemannDissipation::pair(const SphPairLoop<Dim>& loop, const SphPair<Dim>& q,
+                              SphPairSums<Dim>& s) const {
+    const double vr = q.vr;
+    if (!(k_.allPairs || vr <= 0)) return;
+    const std::size_t j = q.j;
+    const double ci = q.ci, cj = loop.c[j];
+    const double invRhoBar = 2.0 / (q.rhoi + loop.rho[j]);
+    const double F = 0.5 * (q.dWi + q.dWj);  // r̂·∇̄W
+    auto signal = [&](double bb) {
+        if (k_.alternativeSignal)
+            return std::sqrt(ci * ci + bb * vr * vr) + std::sqrt(cj * cj + bb * vr * vr) - vr;
+        return 0.5 * (ci + cj) - 0.5 * bb * vr;
+    };
+    const double vSignal = signal(k_.bv);
+    const double mjF = loop.m[j] * invRhoBar * F;
+    s.force += (q.mi * k_.av * vSignal * vr * mjF) * q.rhat;
+    if (massFlux_) s.massFlux += k_.arho * (q.Pi - loop.p[j]) / signal(k_.brho) * mjF;
+    s.heating +=
+        (-0.5 * k_.av * vSignal * vr * vr + k_.ae * signal(k_.be) * (q.ei - (loop.e ? loop.e[j] : 0.0))) *
+        mjF;
+}
+
+void RiemannDissipation::computeRates(SphPairLoop<1>& loop) {
+    loop.run(*this);
+}
+void RiemannDissipation::computeRates(SphPairLoop<2>& loop) {
+    loop.run(*this);
+}
+void RiemannDissipation::computeRates(SphPairLoop<3>& loop) {
+    loop.run(*this);
 }
 
 MFDYN_REGISTER(

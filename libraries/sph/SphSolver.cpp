@@ -125,7 +125,7 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
       W_(kernel_->template evaluator<Dim>()),
       scheme_(DensityScheme::New(settings_.dictionary("densityScheme"))),
       hLaw_(SmoothingLengthLaw::New(settings_.dictionary("smoothingLength"))),
-      diss_(Dissipation::New(settings_.dictionary("dissipation"))->parameters()),
+      dissipation_(Dissipation::New(settings_.dictionary("dissipation"))),
       densityRateLimit_(settings_.scalar("densityRateLimit")),
       neighbourSkin_(settings_.scalar("neighbourSkin")),
       omegaMin_(scheme_->omegaMin()),
@@ -459,42 +459,11 @@ void SphSolver<Dim>::computeDensitySums() {
     if (number_) particles_->copyToGhosts(*number_);
 }
 
+// The per-particle factors of the pair terms, then the fused pair loop (SphPairLoop.hpp) compiled
+// with the dissipation model's pair terms: one virtual call to the model, none per pair.
 template <int Dim>
 void SphSolver<Dim>::computeRates() {
     auto timed = phase("computeRates");
-    const std::size_t n = particles_->ownedCount();
-    const DissipationParameters d = diss_;
-    const bool riemann = d.kind == DissipationParameters::Kind::riemann;
-    const bool monaghan = d.kind == DissipationParameters::Kind::monaghanGingold;
-    const bool differenceForm = differenceForm_;
-    auto omega = [&](std::size_t i) { return omega_ ? (*omega_)[i] : 1.0; };
-
-    // Balsara's switch needs ∇·v and ∇×v per particle (SPH estimates with volumes m/ρ).
-    std::vector<double> balsara;
-    if (monaghan && d.balsara) {
-        balsara.assign(x_.size(), 1.0);
-        parallelFor(n, [&](std::size_t i) {
-            double div = 0;
-            Eigen::Vector3d curl = Eigen::Vector3d::Zero();
-            for (const auto j : neighbours_[i]) {
-                const Vector<Dim> xij = x_[i] - x_[j];
-                const double r = xij.norm();
-                if (r == 0) continue;
-                const Vector<Dim> g = (W_.dWdr(r, h_[i]) / r) * xij;
-                const Vector<Dim> vji = v_[j] - v_[i];
-                const double vol = m_[j] / rho_[j];
-                div += vol * vji.dot(g);
-                if constexpr (Dim >= 2) curl.z() += vol * (vji[1] * g[0] - vji[0] * g[1]);
-                if constexpr (Dim == 3) {
-                    curl.x() += vol * (vji[2] * g[1] - vji[1] * g[2]);
-                    curl.y() += vol * (vji[0] * g[2] - vji[2] * g[0]);
-                }
-            }
-            balsara[i] = std::abs(div) / (std::abs(div) + curl.norm() + 1e-4 * c_[i] / h_[i]);
-        });
-        particles_->copyToGhosts(balsara);
-    }
-
     // Artificial stress R_i = Q diag(−ε max(λ_a, 0)/ρ_i²) Qᵀ from the principal values λ_a of the
     // total stress σ = −P I + τ (tension positive); the pair term Σ_j m_j (R_i + R_j) f_ij^n ∇̄W with
     // f_ij = W(r_ij, h̄)/W(Δp, h̄), Δp = h̄/η the particle spacing (Gray, Monaghan & Swift 2001).
@@ -511,113 +480,34 @@ void SphSolver<Dim>::computeRates() {
             artificialStress_[i] = eigen.eigenvectors() * r.asDiagonal() * eigen.eigenvectors().transpose();
         });
     }
-    const double eta = hLaw_->eta();
-
-    // Per-particle factors of the pair terms, so that the pair loop divides only where the pair
-    // itself is in the denominator.
-    const KernelEvaluator<Dim> W = W_;
-    const Vector<Dim>* x = x_.data();
-    const Vector<Dim>* v = v_.data();
-    const double *m = m_.data(), *rho = rho_.data(), *p = p_.data(), *c = c_.data(), *h = h_.data();
-    const double *a = a_.data(), *b = b_.data(), *invH = invH_.data(), *gradNorm = gradNorm_.data();
-    const double* volume = volume_.data();
-    const double* e = e_ ? e_->data() : nullptr;
-    const SymmTensor<Dim>* tau = tau_ ? tau_->data() : nullptr;
-    // a_j P_j/ω_j of the second pressure term, for every particle (ghosts included).
+    // a_j P_j/ω_j of the second pressure term, for every particle (ghosts included), so that the
+    // pair loop divides only where the pair itself is in the denominator.
     pressureTerm_.resize(x_.size());
-    parallelFor(x_.size(), [&](std::size_t j) { pressureTerm_[j] = a[j] * p[j] / omega(j); });
-    const double* pressureJ = pressureTerm_.data();
-    const bool massFluxOn = d.arho > 0;
+    parallelFor(x_.size(),
+                [&](std::size_t j) { pressureTerm_[j] = a_[j] * p_[j] / (omega_ ? (*omega_)[j] : 1.0); });
 
-    parallelForWork(n, neighbours_.list->pairCount(), [&](std::size_t i) {
-        const double Pi = p[i], oi = omega(i), hi = h[i], ci = c[i], rhoi = rho[i], ei = e ? e[i] : 0.0;
-        const double mi = m[i], bi = b[i], invHi = invH[i], gradNormi = gradNorm[i];
-        const double pressureI = a[i] * Pi / oi;
-        const Vector<Dim> xi = x[i], vi = v[i];
-        Vector<Dim> force = Vector<Dim>::Zero();  // m_i dv_i/dt
-        // Deviatoric stress terms ride in the same pair loop (r, r̂ and dW/dr computed once).
-        const Tensor<Dim> taui = tau ? tau[i].full() : Tensor<Dim>::Zero();
-        Vector<Dim> stressForce = Vector<Dim>::Zero();
-        double continuity = 0, massFlux = 0, heating = 0;
-        for (const auto j : neighbours_[i]) {
-            const Vector<Dim> xij = xi - x[j];
-            const double r = xij.norm();
-            if (r == 0) continue;  // coincident particles exert no pairwise force
-            // Every term carries ∇W(h_i) or ∇W(h_j): a candidate beyond both supports adds zeros.
-            const double ui = r * invHi, uj = r * invH[j];
-            if (ui >= 1.0 && uj >= 1.0) continue;
-            double w, dwi, dwj;
-            W.shape(ui, w, dwi);
-            W.shape(uj, w, dwj);
-            const double dWi = gradNormi * dwi, dWj = gradNorm[j] * dwj;
-            const Vector<Dim> rhat = xij * (1.0 / r);
-            const Vector<Dim> vij = vi - v[j];
-            const double vr = vij.dot(rhat);
-            continuity += b[j] * vr * dWi;
-            if (tau) stressForce += volume[j] * (dWi * (taui * rhat) + dWj * (tau[j].full() * rhat));
-            if (differenceForm)
-                force -= (mi / rhoi * volume[j] * (p[j] - Pi) * dWi) * rhat;
-            else
-                force -= (pressureI * b[j] * dWi + bi * pressureJ[j] * dWj) * rhat;
-
-            if (riemann && (d.allPairs || vr <= 0)) {
-                const double cj = c[j];
-                const double invRhoBar = 2.0 / (rhoi + rho[j]);
-                const double F = 0.5 * (dWi + dWj);  // r̂·∇̄W
-                auto signal = [&](double bb) {
-                    if (d.alternativeSignal)
-                        return std::sqrt(ci * ci + bb * vr * vr) + std::sqrt(cj * cj + bb * vr * vr) - vr;
-                    return 0.5 * (ci + cj) - 0.5 * bb * vr;
-                };
-                const double vSignal = signal(d.bv);
-                const double mjF = m[j] * invRhoBar * F;
-                force += (mi * d.av * vSignal * vr * mjF) * rhat;
-                if (massFluxOn) massFlux += d.arho * (Pi - p[j]) / signal(d.brho) * mjF;
-                heating +=
-                    (-0.5 * d.av * vSignal * vr * vr + d.ae * signal(d.be) * (ei - (e ? e[j] : 0.0))) * mjF;
-            } else if (monaghan && vr < 0) {
-                const double hBar = 0.5 * (hi + h[j]);
-                const double mu = hBar * vij.dot(xij) / (r * r + 0.01 * hBar * hBar);
-                double viscous =
-                    (-d.alpha * 0.5 * (ci + c[j]) * mu + d.beta * mu * mu) / (0.5 * (rhoi + rho[j]));
-                if (!balsara.empty()) viscous *= 0.5 * (balsara[i] + balsara[j]);
-                const double F = 0.5 * (dWi + dWj);
-                force -= (mi * m[j] * viscous * F) * rhat;
-                heating += 0.5 * m[j] * viscous * vr * F;
-                if (massFluxOn) {
-                    const double sig = 0.5 * (ci + c[j]) - 0.5 * d.brho * vr;
-                    massFlux += m[j] * d.arho * (Pi - p[j]) / (0.5 * (rhoi + rho[j]) * sig) * F;
-                }
-            }
-        }
-        const double drho = cc_[i] / oi * continuity;
-        drhodt_[i] = drho + massFlux;
-        dvdt_[i] = force / mi;
-        dedt_[i] = Pi / (rhoi * rhoi) * drho + heating;
-        if (tau_) {
-            dvdt_[i] += stressForce / rhoi;
-            if (artificialStress) {
-                Vector<Dim> extra = Vector<Dim>::Zero();
-                double work = 0;  // −½ Σ_j v_ij·(pair force)/m_i: the energy the pair force moves, kept
-                for (const auto j : neighbours_[i]) {
-                    const Vector<Dim> xij = x_[i] - x_[j];
-                    const double r = xij.norm();
-                    if (r == 0) continue;
-                    const double hBar = 0.5 * (hi + h_[j]);
-                    const double f =
-                        std::pow(W_.W(r, hBar) / W_.W(hBar / eta, hBar), artificialStressExponent_);
-                    const double gradBar = 0.5 * (W_.dWdr(r, hi) + W_.dWdr(r, h_[j]));
-                    const Vector<Dim> pairForce =
-                        m_[j] * f * gradBar / r * ((artificialStress_[i] + artificialStress_[j]) * xij);
-                    extra += pairForce;
-                    work -= 0.5 * (v_[i] - v_[j]).dot(pairForce);
-                }
-                dvdt_[i] += extra;
-                if (e_) dedt_[i] += work;
-            }
-            dedt_[i] += (taui.cwiseProduct(velocityGradient_[i])).sum() / rhoi;
-        }
-    });
+    SphPairLoop<Dim> loop;
+    loop.owned = particles_->ownedCount();
+    loop.size = x_.size();
+    loop.particles = particles_;
+    loop.W = W_;
+    loop.neighbours = neighbours_;
+    loop.pairCount = neighbours_.list->pairCount();
+    loop.x = x_.data(), loop.v = v_.data();
+    loop.m = m_.data(), loop.rho = rho_.data(), loop.p = p_.data(), loop.c = c_.data(), loop.h = h_.data();
+    loop.e = e_ ? e_->data() : nullptr;
+    loop.omega = omega_ ? omega_->data() : nullptr;
+    loop.a = a_.data(), loop.b = b_.data(), loop.cc = cc_.data();
+    loop.invH = invH_.data(), loop.gradNorm = gradNorm_.data(), loop.volume = volume_.data();
+    loop.pressureTerm = pressureTerm_.data();
+    loop.differenceForm = differenceForm_;
+    loop.tau = tau_ ? tau_->data() : nullptr;
+    loop.velocityGradient = tau_ ? velocityGradient_.data() : nullptr;
+    loop.artificialStress = artificialStress ? artificialStress_.data() : nullptr;
+    loop.artificialStressExponent = artificialStressExponent_;
+    loop.eta = hLaw_->eta();
+    loop.dvdt = dvdt_.data(), loop.drhodt = drhodt_.data(), loop.dedt = dedt_.data();
+    dissipation_->computeRates(loop);
 }
 
 template <int Dim>

@@ -43,6 +43,7 @@
 #include "sph/DensityScheme.hpp"
 #include "sph/Dissipation.hpp"
 #include "sph/SmoothingLengthLaw.hpp"
+#include "sph/SphPairLoop.hpp"
 
 #include <memory>
 #include <vector>
@@ -104,7 +105,7 @@ private:
     KernelEvaluator<Dim> W_;
     std::unique_ptr<DensityScheme> scheme_;
     std::unique_ptr<SmoothingLengthLaw> hLaw_;
-    DissipationParameters diss_;
+    std::unique_ptr<Dissipation> dissipation_;  // its pair terms run inside computeRates' loop
     double densityRateLimit_;
     double neighbourSkin_;
     double omegaMin_;
@@ -161,16 +162,8 @@ private:
     // Mirror ghosts of this step live in the particle set's ghost range [ownedCount(), size())
     // while the rates are computed, and are cleared before anything else sees the particles.
     // Rows of the candidate list or, once selectNeighbours() has run this step, of the pairs
-    // within either support (row i: count[i] entries from selected + the candidate row's offset).
-    struct Rows {
-        const NeighbourList* list;
-        const NeighbourList::Index* selected;
-        const NeighbourList::Index* count;
-        std::span<const NeighbourList::Index> operator[](std::size_t i) const {
-            if (count) return {selected + list->offsets()[i], count[i]};
-            return (*list)[i];
-        }
-    } neighbours_{nullptr, nullptr, nullptr};
+    // within either support (SphPairLoop.hpp).
+    SphNeighbourRows neighbours_;
     std::vector<NeighbourList::Index> selected_, selectedCount_;
     std::size_t rebuilds_ = 0, neighbourUpdates_ = 0;
     double pairInteractions_ = 0;  // candidate pairs visited by the force loop, summed over steps

@@ -18,13 +18,22 @@ using namespace mfdyn;
 
 namespace {
 
-DissipationParameters parametersOf(const std::string& text) {
-    return Dissipation::New(Dictionary::parse(text, "dissipation"))->parameters();
+std::unique_ptr<Dissipation> modelOf(const std::string& text) {
+    return Dissipation::New(Dictionary::parse(text, "dissipation"));
+}
+
+// The coefficients a model of type M read from `text` (a test failure if it is another type).
+template <class M>
+typename M::Coefficients coefficientsOf(const std::string& text) {
+    const auto model = modelOf(text);
+    const auto* m = dynamic_cast<const M*>(model.get());
+    EXPECT_NE(m, nullptr) << text;
+    return m ? m->coefficients() : typename M::Coefficients{};
 }
 
 // The message of the InputError that `text` raises ("" and a test failure if none).
 std::string errorOf(const std::string& text) {
-    return test::inputErrorOf([&] { parametersOf(text); }, text);
+    return test::inputErrorOf([&] { modelOf(text); }, text);
 }
 
 }  // namespace
@@ -41,8 +50,7 @@ TEST(DissipationContract, EveryTypeDeclaresAKeywordSchema) {
 }
 
 TEST(DissipationContract, DefaultsAreTheThesisAndMonaghanValues) {
-    const DissipationParameters r = parametersOf("type riemann;");
-    EXPECT_EQ(r.kind, DissipationParameters::Kind::riemann);
+    const auto r = coefficientsOf<RiemannDissipation>("type riemann;");
     EXPECT_EQ(r.av, 1.0);
     EXPECT_EQ(r.bv, 2.0);
     EXPECT_EQ(r.arho, 0.5);
@@ -51,18 +59,17 @@ TEST(DissipationContract, DefaultsAreTheThesisAndMonaghanValues) {
     EXPECT_EQ(r.be, 2.0);
     EXPECT_FALSE(r.alternativeSignal);
     EXPECT_FALSE(r.allPairs);
-    const DissipationParameters m = parametersOf("type monaghanGingold;");
-    EXPECT_EQ(m.kind, DissipationParameters::Kind::monaghanGingold);
+    const auto m = coefficientsOf<MonaghanGingoldViscosity>("type monaghanGingold;");
     EXPECT_EQ(m.alpha, 1.0);
     EXPECT_EQ(m.beta, 2.0);
     EXPECT_FALSE(m.balsara);
     EXPECT_EQ(m.arho, 0.0);
     EXPECT_EQ(m.brho, 0.0);
-    EXPECT_EQ(parametersOf("type none;").kind, DissipationParameters::Kind::none);
+    EXPECT_NE(dynamic_cast<const NoDissipation*>(modelOf("type none;").get()), nullptr);
 }
 
 TEST(DissipationContract, GivenValuesAreRead) {
-    const DissipationParameters r = parametersOf(
+    const auto r = coefficientsOf<RiemannDissipation>(
         "type riemann; velocity (0.5 1); density (0 0); energy (0.2 3); signal alternative; pairs all;");
     EXPECT_EQ(r.av, 0.5);
     EXPECT_EQ(r.bv, 1.0);
@@ -71,8 +78,8 @@ TEST(DissipationContract, GivenValuesAreRead) {
     EXPECT_EQ(r.be, 3.0);
     EXPECT_TRUE(r.alternativeSignal);
     EXPECT_TRUE(r.allPairs);
-    const DissipationParameters m =
-        parametersOf("type monaghanGingold; alpha 0.5; beta 1; balsara yes; density (0.5 0);");
+    const auto m = coefficientsOf<MonaghanGingoldViscosity>(
+        "type monaghanGingold; alpha 0.5; beta 1; balsara yes; density (0.5 0);");
     EXPECT_EQ(m.alpha, 0.5);
     EXPECT_EQ(m.beta, 1.0);
     EXPECT_TRUE(m.balsara);
