@@ -1096,12 +1096,11 @@ int main(int argc, char** argv) {
         "        }\n"
         "    }\n"
         "Variants are the product variants x axes x resolution. A finished variant (study/<v>/mfStudy.done,\n"
-        "written after a successful run) is not rerun; one that failed or was stopped runs again from the\n"
-        "case. A failed variant is a row with the first error line of its logs. studyDict is checked "
-        "against\n"
-        "the case before anything runs: a path that is not in the case, an empty list or a value of the\n"
-        "wrong form is an error with its file and line, exit status 1. Without gnuplot the plots are "
-        "skipped.",
+        "written after a successful run) is not rerun unless studyDict has changed its entries; one that\n"
+        "failed or was stopped runs again from the case; one study of a case runs at a time. A failed\n"
+        "variant is a row with the first error line of its logs. studyDict is checked against the case\n"
+        "before anything runs: a path that is not in the case, an empty list or a value of the wrong form\n"
+        "is an error with its file and line, exit status 1. Without gnuplot the plots are skipped.",
         {{"jobs", "N", "variants run side by side (default: studyDict's jobs, else 1)"},
          {"list", "", "print the variants and the entries each sets, then stop (nothing is written)"}},
         {},
