@@ -846,7 +846,8 @@ std::string plot(const fs::path& studyDir, const std::string& measure, const std
     if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
         return "gnuplot not found: plots skipped (results.csv and results.md are written)";
     std::ostringstream data;
-    std::vector<std::string> titles;
+    std::vector<std::string> titles, resolutionTitles;
+    std::vector<double> limits;  // Richardson's value at h -> 0 per plotted line
     for (const auto& line : lines) {
         std::size_t points = 0;
         for (std::size_t i : line.runs)
@@ -860,6 +861,13 @@ std::string plot(const fs::path& studyDir, const std::string& measure, const std
         if (line.orderCpu) title += ", order in CPU " + shortNumber(-*line.orderCpu);
         if (line.orderH) title += ", order in h " + shortNumber(*line.orderH);
         titles.push_back(title);
+        std::string byH = gnuplotText(line.scheme);
+        if (line.orderH) byH += ", order in h " + shortNumber(*line.orderH);
+        if (line.extrapolation)
+            byH += ", Richardson order " + shortNumber(line.extrapolation->order) + ", extrapolated " +
+                   shortNumber(line.extrapolation->extrapolated);
+        resolutionTitles.push_back(byH);
+        limits.push_back(line.extrapolation ? line.extrapolation->extrapolated : NAN);
     }
     if (titles.empty())
         return measure.empty() ? "no finished run reported an error norm: plots skipped"
@@ -868,7 +876,8 @@ std::string plot(const fs::path& studyDir, const std::string& measure, const std
     writeAtomically(studyDir / "plot.dat", data.str());
     const bool haveH = std::any_of(h.begin(), h.end(), [](double v) { return std::isfinite(v); });
     std::ostringstream script;
-    script << "set terminal pngcairo size 1000,650\nset logscale xy\nset grid\nset key outside below\n"
+    script << "set terminal pngcairo size 1100,750\nset logscale xy\nset grid\nset key outside below "
+              "vertical maxcols 1 font ',10'\n"
            << "set ylabel '" << gnuplotText(measure) << "'\n";
     script << "set output 'errorVsCpu.png.tmp'\nset title 'error against CPU time'\nset xlabel 'CPU time "
               "(s)'\nplot ";
@@ -882,7 +891,12 @@ std::string plot(const fs::path& studyDir, const std::string& measure, const std
                   "'spacing h'\nplot ";
         for (std::size_t k = 0; k < titles.size(); ++k)
             script << (k ? ", " : "") << "'plot.dat' index " << k
-                   << " using 1:3 with linespoints lw 2 pt 7 title '" << titles[k] << "'";
+                   << " using 1:3 with linespoints lw 2 pt 7 lc " << k + 1 << " title '"
+                   << resolutionTitles[k] << "'";
+        // The extrapolated value as a dashed level where the log axis can show it.
+        for (std::size_t k = 0; k < limits.size(); ++k)
+            if (limits[k] > 0)
+                script << ", " << number(limits[k]) << " with lines dt 2 lc " << k + 1 << " notitle";
         script << "\n";
     }
     script << "unset output\n";
