@@ -58,7 +58,8 @@ KeywordSchema TlSphSolver<Dim>::projectionKeywords() {
 template <int Dim>
 KeywordSchema TlSphSolver<Dim>::keywords() {
     return KeywordSchema("solver", "tlSph")
-        .dictionary("formulation", "which of p, F, H, J are evolved (a formulation type)")
+        .word("formulation", {"pF", "pFJ", "pFHJ", "displacement"},
+              "the conservation laws integrated: {p, F}, {p, F, J}, {p, F, H, J}, or p with F = I + grad~ u")
         .dictionary("kernel", "the smoothing kernel (a kernel type; support 2h)")
         .dictionary("dissipation", "the stabilisation D(p), D(J) (a tlDissipation type)")
         .dictionary("bodyForce", "body force per unit mass a(x, t), E = rho0 a (a bodyForce type)")
@@ -87,6 +88,35 @@ KeywordSchema TlSphSolver<Dim>::keywords() {
         .optional();
 }
 
+// The formulation is a solver option, not a plug-in model: it selects which conservation laws the
+// solver integrates (Lee et al. 2016 eqs. 1, 6; eq. 34 for displacement), and their update rules
+// (dF/dt = G, dH/dt = F x G, dJ/dt = H : G + D(J), or F from the positions) are the solver's own,
+// inseparable from its stages, its stress evaluation and its fields, so a model outside the
+// solver could add nothing but a name.
+//
+//     formulation   evolves               computed from F each evaluation
+//     pF            p, F                  H = cof F, J = det F
+//     pFJ           p, F, J               H = cof F (near incompressibility: no checkerboarding)
+//     pFHJ          p, F, H, J            -   (the polyconvex laws' natural arguments)
+//     displacement  p (and x)             F = I + grad~ u, u = x - X (Remark 5: the classical
+//                                         displacement-based TL-SPH, for comparison)
+template <int Dim>
+typename TlSphSolver<Dim>::Formulation TlSphSolver<Dim>::formulationNamed(const std::string& name) {
+    if (name == "displacement") return {name, false, false, false};
+    return {name, true, name == "pFHJ", name == "pFJ" || name == "pFHJ"};
+}
+
+template <int Dim>
+KeywordValues TlSphSolver<Dim>::readSettings(const Dictionary& properties) {
+    // One syntax: the old family form `formulation { type pFJ; }` is refused at its line.
+    if (properties.isDict("formulation"))
+        throw properties.error(
+            "formulation",
+            "formulation is now a word of tlSphProperties, `formulation pFJ;` (one of pF | "
+            "pFJ | pFHJ | displacement), not a dictionary");
+    return keywords().read(properties);
+}
+
 template <int Dim>
 TlSphSolver<Dim>::TlSphSolver(SolverRun& run)
     : Solver(run),
@@ -94,9 +124,9 @@ TlSphSolver<Dim>::TlSphSolver(SolverRun& run)
       particles_(owner_.get()),
       properties_(openConstant("tlSphProperties")),
       materialProperties_(openConstant("materialProperties")),
-      settings_(keywords().read(properties_)),
+      settings_(readSettings(properties_)),
       kernel_(Kernel::New(settings_.dictionary("kernel"))),
-      formulation_(Formulation::New(settings_.dictionary("formulation"))),
+      formulation_(formulationNamed(settings_.word("formulation"))),
       dissipationModel_(TlDissipation::New(settings_.dictionary("dissipation"))),
       dissipation_(dissipationModel_->coefficients()),
       x_(particles_->position()),
@@ -182,7 +212,7 @@ void TlSphSolver<Dim>::initialiseFields() {
             InitialState<Dim>::New(init)->apply(*particles_, *X_);
             Log::info("Initial state: " + init.get<std::string>("type"));
         }
-    if (formulation_->evolvesH()) {
+    if (formulation_.evolvesH()) {
         const bool had = particles_->hasField("cofactor");
         H_ = &particles_->tensorField("cofactor");
         if (!had)
@@ -191,7 +221,7 @@ void TlSphSolver<Dim>::initialiseFields() {
                 (*H_)[i] = inPlane<Dim>(0.5 * tensorCross(F3, F3));
             }
     }
-    if (formulation_->evolvesJ()) {
+    if (formulation_.evolvesJ()) {
         const bool had = particles_->hasField("jacobian");
         J_ = &particles_->scalarField("jacobian");
         if (!had)
@@ -265,7 +295,7 @@ void TlSphSolver<Dim>::initialiseFields() {
     for (std::size_t k = 0; k < materials_->size(); ++k) cpMax_ = std::max(cpMax_, law(k).pWaveSpeed());
 
     // P and the pressure of the initial state, for the first write and the function objects.
-    if (formulation_->displacementBased()) computeDisplacementGradient();
+    if (formulation_.displacementBased()) computeDisplacementGradient();
     computeStress(false);
     stressCurrent_ = true;
 
@@ -280,7 +310,7 @@ void TlSphSolver<Dim>::initialiseFields() {
     if (J_ && dissipation_.jacobian4) lap2J_.assign(n, 0.0);
 
     std::ostringstream s;
-    s << "tlSph: formulation " << formulation_->name() << ", kernel " << kernel_->type() << ", spacing "
+    s << "tlSph: formulation " << formulation_.name() << ", kernel " << kernel_->type() << ", spacing "
       << spacing_ << ", h " << h_ << ", "
       << operators_->neighbours().offsets()[n] / std::max<std::size_t>(1, n)
       << " neighbours per particle (reference configuration, " << watch.seconds() << " s), c_p,max " << cpMax_
@@ -416,7 +446,7 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
     // P of the state the step starts from was computed at the end of the last step (or at
     // set-up): the first stage reuses it.
     if (!stressCurrent_) {
-        if (formulation_->displacementBased()) computeDisplacementGradient();
+        if (formulation_.displacementBased()) computeDisplacementGradient();
         computeStress(false);
     }
     stressCurrent_ = false;
@@ -435,7 +465,7 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
     const double* J = J_ ? J_->data() : nullptr;
     const double* rho0 = rho0_.data();
     const bool lapMomentum = !lapP_.empty(), lapJacobian = !lapJ_.empty();
-    const bool evolveF = formulation_->evolvesF();
+    const bool evolveF = formulation_.evolvesF();
     std::vector<Vector<Dim>> force(n);
     parallelForWork(n, offsets[n], [&](std::size_t a) {
         Tensor<Dim> G = Tensor<Dim>::Zero();
@@ -592,10 +622,10 @@ void TlSphSolver<Dim>::step(double dt) {
     // step, as it does for the exact solution, instead of half of it in the trapezoidal stage 2.
     const double tEnd = std::nextafter(t + dt, t);
     x0_ = x_, v0_ = v_;
-    if (formulation_->evolvesF()) F0_ = *F_;
+    if (formulation_.evolvesF()) F0_ = *F_;
     if (H_) H0_ = *H_;
     if (J_) J0_ = *J_;
-    const bool evolveF = formulation_->evolvesF();
+    const bool evolveF = formulation_.evolvesF();
 
     // Stage 1: U* = U^n + dt U'(U^n), moments about x~ = x^n.
     computeRates(x0_, t);
@@ -633,7 +663,7 @@ void TlSphSolver<Dim>::step(double dt) {
     }
     integrateTime.stop();
     // P^{n+1} for the output and the plastic state that goes with it.
-    if (formulation_->displacementBased()) computeDisplacementGradient();
+    if (formulation_.displacementBased()) computeDisplacementGradient();
     computeStress(true);
     stressCurrent_ = true;
     checkState("step");
@@ -730,7 +760,7 @@ std::vector<std::string> TlSphSolver<Dim>::summary(double loopSeconds) const {
     std::snprintf(line, sizeof line, "pressure oscillation  %.6g (sum V |L[p]| h^2 / sum V |p|)",
                   pressureOscillation());
     lines.push_back(line);
-    if (formulation_->evolvesF()) {
+    if (formulation_.evolvesF()) {
         std::snprintf(line, sizeof line,
                       "compatibility        %.3e (max |F - I - grad~(x - X)| / max(1, |F|))",
                       compatibilityError());

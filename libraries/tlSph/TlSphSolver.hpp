@@ -9,7 +9,7 @@
 //     -> projections (momentum of T and D(p), mean of D(J)) -> boundary conditions -> update
 //
 // constant/tlSphProperties:
-//     formulation { type pFJ; }                  // pF | pFJ | pFHJ | displacement
+//     formulation pFJ;                           // pF | pFJ | pFHJ | displacement (a solver option)
 //     kernel      { type wendlandC2; }           // any registered kernel (support 2h)
 //     smoothingLengthRatio 1.3;                  // h = ratio x spacing (default 1.3)
 //     spacing     0.05;                          // optional: particle spacing (default: largest V^(1/d))
@@ -42,7 +42,6 @@
 #include "meshfreeOperators/ReferenceOperators.hpp"
 #include "solver/BodyForce.hpp"
 #include "solver/Solver.hpp"
-#include "tlSph/Formulation.hpp"
 #include "tlSph/LagrangeMultiplierProjection.hpp"
 #include "tlSph/TlDissipation.hpp"
 
@@ -61,6 +60,18 @@ public:
     static KeywordSchema keywords();
     static KeywordSchema projectionKeywords();
     static constexpr const char* propertiesDictionary = "tlSphProperties";
+
+    // Which fields `formulation <name>;` evolves (TlSphSolver.cpp: why it is a solver option).
+    struct Formulation {
+        std::string name_;
+        bool F, H, J;
+        const std::string& name() const { return name_; }
+        bool evolvesF() const { return F; }
+        bool evolvesH() const { return H; }
+        bool evolvesJ() const { return J; }
+        bool displacementBased() const { return !F; }
+    };
+    static Formulation formulationNamed(const std::string& name);
     ~TlSphSolver() override;
 
     TimeStepVote stableTimeStep() override;
@@ -77,6 +88,8 @@ public:
     double compatibilityError() const;
 
 private:
+    // keywords().read(), after refusing the old dictionary form of `formulation`.
+    static KeywordValues readSettings(const Dictionary& properties);
     void readMaterials();
     void initialiseFields();
     void makeMirrorGhosts();
@@ -104,7 +117,7 @@ private:
     const Dictionary& materialProperties_;
     const KeywordValues settings_;  // tlSphProperties read through keywords()
     std::unique_ptr<Kernel> kernel_;
-    std::unique_ptr<Formulation> formulation_;
+    Formulation formulation_;
     std::unique_ptr<TlDissipation> dissipationModel_;
     TlDissipationCoefficients dissipation_;
     std::unique_ptr<MaterialSet<Dim>> materials_;  // a constitutive law per material

@@ -3,6 +3,7 @@
 # spelling runs. A 5^3 swinging cube, a few steps.
 #   alphaCFL (tlSphProperties)  -> maxCo in system/controlDict (one Courant keyword for every method)
 #   maxCo above 1               -> refused (the TVD RK2 is unstable above 1)
+#   formulation { type pF; }   -> `formulation pF;` (a solver option, one syntax)
 #   an equationOfState in a material (MaterialSet with tlSph's models: a constitutive law only;
 #                                  it used to be ignored)
 source "$(dirname "$0")/common.sh"
@@ -30,6 +31,8 @@ refused alphaCFL constant/tlSphProperties "^alphaCFL" "alphaCFL is now maxCo in 
     sh -c 'echo "alphaCFL 0.3;" >> constant/tlSphProperties'
 refused maxCoAboveOne system/controlDict "^maxCo" "tlSph needs maxCo in (0, 1]" \
     sed -i "s/^maxCo .*/maxCo 1.5;/" system/controlDict
+refused formulationDictionary constant/tlSphProperties "^formulation" "formulation is now a word of tlSphProperties, .formulation pFJ;." \
+    sed -i 's/^formulation .*/formulation { type pF; }/' constant/tlSphProperties
 refused equationOfState constant/materialProperties "equationOfState {" "tlSph does not use a" \
     sed -i 's/constitutiveLaw { type linearElastic; }/constitutiveLaw { type linearElastic; }\n        equationOfState { type idealGas; gamma 1.4; }/' constant/materialProperties
 # The new spelling runs, and without maxCo the method's 0.3 applies: the same steps as maxCo 0.3.

@@ -6,8 +6,8 @@ c="$WORK/pFJ"
 copyTutorial nearlyIncompressiblePunch "$c"
 particleGen -case "$c" > "$c/log.particleGen" 2>&1 || fail "particleGen: $(tail "$c/log.particleGen")"
 cp -r "$c" "$WORK/pF"
-sed -i 's/formulation          { type pFJ; }/formulation          { type pF; }/' "$WORK/pF/constant/tlSphProperties"
-grep -q "type pF; }" "$WORK/pF/constant/tlSphProperties" || fail "could not switch to pF"
+sed -i 's/^formulation          pFJ;/formulation          pF;/' "$WORK/pF/constant/tlSphProperties"
+grep -q "^formulation *pF;" "$WORK/pF/constant/tlSphProperties" || fail "could not switch to pF"
 run "$c" tlSph
 run "$WORK/pF" tlSph
 grep -q "steps *[0-9]* to t = 0.014$" "$c/log.tlSph" || fail "{p,F,J} did not reach t = 0.014: $(grep steps "$c/log.tlSph")"

@@ -75,7 +75,7 @@ int runTlSph(const fs::path& dir) {
 }
 
 const std::string base =
-    "formulation { type pF; }\nkernel { type wendlandC2; }\n"
+    "formulation pF;\nkernel { type wendlandC2; }\n"
     "dissipation { type jst; momentum (0.03125 0.125); }\n";
 
 }  // namespace

@@ -59,3 +59,27 @@ TEST(SolverKeywords, everyTutorialWritesOnlyDeclaredKeywords) {
     }
     EXPECT_GE(files, 11u);  // the eleven tutorials of tutorials/tlSph
 }
+
+// The formulation is a word of tlSphProperties (a solver option: it selects the conservation laws
+// the solver integrates, Lee et al. 2016 eqs. 1, 6, 34), each evolving what its name says.
+TEST(SolverKeywords, theFormulationIsAWordAndEvolvesWhatItsNameSays) {
+    const KeywordSchema schema = TlSphSolver<3>::keywords();
+    const Keyword* k = schema.find("formulation");
+    ASSERT_NE(k, nullptr);
+    EXPECT_EQ(k->type, Keyword::Type::word);
+    EXPECT_EQ(k->words, (std::vector<std::string>{"pF", "pFJ", "pFHJ", "displacement"}));
+    struct Expected {
+        const char* name;
+        bool F, H, J;
+    };
+    for (const Expected& e :
+         {Expected{"pF", true, false, false}, Expected{"pFJ", true, false, true},
+          Expected{"pFHJ", true, true, true}, Expected{"displacement", false, false, false}}) {
+        const auto f = TlSphSolver<3>::formulationNamed(e.name);
+        EXPECT_EQ(f.name(), e.name);
+        EXPECT_EQ(f.evolvesF(), e.F) << e.name;
+        EXPECT_EQ(f.evolvesH(), e.H) << e.name;
+        EXPECT_EQ(f.evolvesJ(), e.J) << e.name;
+        EXPECT_EQ(f.displacementBased(), !e.F) << e.name;
+    }
+}
