@@ -8,10 +8,10 @@
 //
 // A model is behaviour, not flags: it carries its own pair terms (viscous force, mass flux,
 // heating), and its equations and keywords are in its own .cpp (RiemannDissipation,
-// MonaghanGingoldViscosity, NoDissipation) and in doc/models/dissipation/. Evaluated inside the
-// solver's fused pair loop by double dispatch (SphPairLoop.hpp): one virtual computeRates() a rate
-// evaluation, which runs the loop compiled with the model's inline pair terms, so a model in a
-// user library costs no virtual call per pair either. One overload per dimension: the solver is
+// MonaghanGingoldViscosity, NoDissipation) and in doc/models/impactSph/dissipation/. Evaluated
+// inside the solver's fused pair loop by double dispatch (SphPairLoop.hpp): one virtual
+// computeRates() a rate evaluation, which runs the loop compiled with the model's inline pair
+// terms, so a model in a user library costs no virtual call per pair either. One overload per dimension: the solver is
 // SphSolver<Dim> for Dim 1, 2, 3, the family one registry.
 #include "core/KeywordSchema.hpp"
 #include "core/Registry.hpp"
@@ -26,6 +26,8 @@ struct SphPairLoop;
 class Dissipation {
 public:
     static constexpr const char* familyName = "dissipation";
+    // impactSph's own family ("dissipation (impactSph)"; tlSph's dissipation is another).
+    static constexpr const char* methodName = "impactSph";
     using Selector = Registry<Dissipation, const Dictionary&>;
     static std::unique_ptr<Dissipation> New(const Dictionary& dict) { return Selector::New(dict); }
 

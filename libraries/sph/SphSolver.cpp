@@ -30,6 +30,7 @@
 #include "core/MessageText.hpp"
 #include "core/Parallel.hpp"
 #include "solver/MaterialAssignment.hpp"
+#include "solver/SolverRegistry.hpp"
 #include "solver/SolverRun.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -108,9 +109,9 @@ KeywordSchema SphSolver<Dim>::keywords() {
               "time integrator: leapfrog (one rate evaluation a step) or midpoint predictor-corrector")
         .orDefault("leapfrog")
         .dictionary("artificialStress",
-                    "Monaghan's artificial stress against the tensile instability of solids: epsilon (-, "
-                    ">= 0, default 0.3), exponent (-, default 4)")
-        .optional();
+                    "Monaghan's artificial stress against the tensile instability of solids")
+        .optional()
+        .nested(&artificialStressKeywords);
 }
 
 template <int Dim>
@@ -131,6 +132,8 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
       omegaMin_(scheme_->omegaMin()),
       differenceForm_(settings_.word("momentum") == "difference"),
       predictorCorrector_(settings_.word("integrator") == "predictorCorrector"),
+      materials_(materialProperties_,
+                 MaterialModels{"impactSph", ModelUse::required, ModelUse::optional, ModelUse::refused}),
       x_(particles_->position()),
       v_(particles_->vectorField("velocity")),
       m_(requireScalarField(*particles_, "mass", "particle masses")),
@@ -144,10 +147,10 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
     readMaterials();
     initialiseFields();
     if (settings_.given("artificialStress")) {
-        const KeywordValues as = artificialStressKeywords().read(settings_.dictionary("artificialStress"));
+        const KeywordValues& as = settings_.nested("artificialStress");
         artificialStressEpsilon_ = as.scalar("epsilon");
         artificialStressExponent_ = as.scalar("exponent");
-        if (!anyStrength_)
+        if (!materials_.anyStrength())
             throw settings_.error("artificialStress",
                                   "artificial stress acts on solids: no material has a strength law");
     }
@@ -159,25 +162,14 @@ SphSolver<Dim>::~SphSolver() = default;
 
 template <int Dim>
 void SphSolver<Dim>::readMaterials() {
-    const Dictionary& all = materialProperties_.subDict("materials");
-    const std::vector<std::string> names = materialNames(materialProperties_);
-    for (const auto& name : names) {
-        const Dictionary& m = all.subDict(name);
-        materials_.push_back({name, EquationOfState::New(m.subDict("equationOfState")), nullptr});
-        if (materials_.back().eos->needsEnergy()) needsEnergy_ = true;
-        if (const Dictionary* strength = m.findDict("strength")) {
-            auto law = Strength<Dim>::New(*strength);
-            if (law->allocatesStress()) materials_.back().strength = std::move(law), anyStrength_ = true;
-        }
-    }
-    assignMaterials(*particles_, names, materialProperties_);
+    assignMaterials(*particles_, materials_.names(), materialProperties_);
 }
 
 template <int Dim>
 void SphSolver<Dim>::initialiseFields() {
     const std::size_t n = x_.size();
     checkPositiveMassAndDensity(*particles_, m_, rho_);
-    if (needsEnergy_) {
+    if (materials_.needsEnergy()) {
         const bool hadEnergy = particles_->hasField("specificInternalEnergy");
         e_ = &particles_->scalarField("specificInternalEnergy");
         if (!hadEnergy) {
@@ -198,19 +190,13 @@ void SphSolver<Dim>::initialiseFields() {
     if (!predictorCorrector_) {
         vHalf_ = &particles_->vectorField("velocityHalfStep");
         if (!scheme_->summation()) rhoHalf_ = &particles_->scalarField("densityHalfStep");
-        if (needsEnergy_) eHalf_ = &particles_->scalarField("specificInternalEnergyHalfStep");
+        if (materials_.needsEnergy()) eHalf_ = &particles_->scalarField("specificInternalEnergyHalfStep");
     }
-    if (anyStrength_) {
+    if (materials_.anyStrength()) {
         tau_ = &particles_->symmTensorField("deviatoricStress");
         if (!predictorCorrector_) tauHalf_ = &particles_->symmTensorField("deviatoricStressHalfStep");
-        bool plastic = false, thermal = false;
-        for (const auto& m : materials_) {
-            if (!m.strength) continue;
-            plastic = plastic || m.strength->usesPlasticStrain();
-            thermal = thermal || m.strength->usesTemperature();
-        }
-        if (plastic) plasticStrain_ = &particles_->scalarField("plasticStrain");
-        if (thermal) {
+        if (materials_.usesPlasticStrain()) plasticStrain_ = &particles_->scalarField("plasticStrain");
+        if (materials_.usesTemperature()) {
             const bool had = particles_->hasField("temperature");
             temperature_ = &particles_->scalarField("temperature");
             if (!had)
@@ -521,7 +507,7 @@ void SphSolver<Dim>::ensureRates() {
     computeDensitySums();
     computeEquationOfState();
     checkState("computeEquationOfState");
-    if (anyStrength_) {
+    if (materials_.anyStrength()) {
         computeVelocityGradient();
         computeStressRate();
     }
@@ -798,5 +784,7 @@ std::vector<std::string> SphSolver<Dim>::summary(double loopSeconds) const {
 template class SphSolver<1>;
 template class SphSolver<2>;
 template class SphSolver<3>;
+
+MFDYN_REGISTER_SOLVER(SphSolver, "impactSph", "Updated-Lagrangian SPH for shocks and impact");
 
 }  // namespace mfdyn

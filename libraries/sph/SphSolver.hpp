@@ -18,6 +18,8 @@
 //
 // constant/materialProperties:  materials { name { equationOfState { type idealGas; gamma 1.4; }
 //                                                  strength { type vonMises; } } }   // strength optional
+//     (read by MaterialSet: an equation of state required, a strength law optional, a
+//     constitutiveLaw refused)
 // constant/boundaryConditions (optional; libraries/boundaryConditions): fixed, prescribedVelocity,
 // symmetryPlane, rigidPlanarWall, mirrorPlane on regions or shapes; applied to accelerations after
 // the rates, to velocities after each leapfrog update and to positions after the drift (mirrorPlane
@@ -35,6 +37,7 @@
 #include "core/KeywordSchema.hpp"
 #include "kernels/Kernel.hpp"
 #include "kernels/KernelEvaluator.hpp"
+#include "materials/MaterialSet.hpp"
 #include "materials/equationOfState/EquationOfState.hpp"
 #include "materials/strength/Strength.hpp"
 #include "particles/NeighbourSearch.hpp"
@@ -70,12 +73,6 @@ public:
     std::vector<std::string> summary(double loopSeconds) const override;
 
 private:
-    struct Material {
-        std::string name;
-        std::unique_ptr<EquationOfState> eos;
-        std::unique_ptr<Strength<Dim>> strength;  // null: no deviatoric stress
-    };
-
     void readMaterials();
     void initialiseFields();
     void ensureRates();
@@ -111,12 +108,12 @@ private:
     double omegaMin_;
     bool differenceForm_;
     bool predictorCorrector_;
+    // Per material its equation of state (required) and strength law (optional; null when none or
+    // one without stress); a constitutive law is refused (MaterialSet.hpp).
+    MaterialSet<Dim> materials_;
     // Monaghan's artificial stress (Monaghan 2000; Gray, Monaghan & Swift 2001): ε, n; ε = 0 off.
     double artificialStressEpsilon_ = 0, artificialStressExponent_ = 4;
     std::vector<Tensor<Dim>> artificialStress_;
-    std::vector<Material> materials_;
-    bool needsEnergy_ = false;
-    bool anyStrength_ = false;
 
     std::vector<Vector<Dim>>& x_;
     std::vector<Vector<Dim>>& v_;

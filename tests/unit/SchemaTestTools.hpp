@@ -26,10 +26,11 @@ inline std::string inputErrorOf(const std::function<void()>& construct, const st
 }
 
 // Each schema is the one registered for its type in `family`, from a source file under
-// `sourceDirectory` (e.g. "libraries/sph/"), and every keyword has a meaning and a unit.
+// `sourceDirectory` (e.g. "libraries/sph/"), and every keyword has a meaning and a unit. `method`:
+// the methodName of a method-scoped family ("" for a shared one).
 inline void expectRegisteredSchemas(const char* family, std::initializer_list<KeywordSchema> schemas,
-                                    const std::string& sourceDirectory) {
-    const RegistryFamily* registered = RegistryIndex::global().findFamily(family);
+                                    const std::string& sourceDirectory, const char* method = "") {
+    const RegistryFamily* registered = RegistryIndex::global().findFamily(family, method);
     ASSERT_NE(registered, nullptr) << family;
     for (const KeywordSchema& schema : schemas) {
         EXPECT_EQ(schema.family(), family);

@@ -3,6 +3,9 @@
 # a solid are each an input error at the file and line, naming the valid choices or bounds, with
 # exit status 1 and nothing written beyond the start. (Before the schema the words were checked
 # by hand with other messages, and a negative densityRateLimit was taken silently as off.)
+# constant/materialProperties goes through MaterialSet with impactSph's models (equation of state
+# required, strength optional, constitutive law refused): a constitutiveLaw, ignored before, is an
+# error at its entry naming what impactSph takes.
 . "$(dirname "$0")/common.sh"
 c=$(newCase "$SOURCE/sodShockTube" bad)
 particleGen -case "$c" > "$c/log.particleGen" 2>&1 || fail "particleGen failed"
@@ -28,4 +31,17 @@ expectError "neighbourSkin -0.1;" "keyword 'neighbourSkin': expected a value >= 
 expectError "densityRateLimit -0.2;" "keyword 'densityRateLimit': expected a value >= 0, found -0.2"
 expectError "artificialStress { epsilon -1; }" "in 'artificialStress': keyword 'epsilon': expected a value >= 0, found -1"
 expectError "artificialStress { epsilon 0.3; }" "artificial stress acts on solids: no material has a strength law"
-pass "six bad sphProperties entries: each an input error at sphProperties:$line with its choices or bound"
+cp "$c/sphProperties.good" "$c/constant/sphProperties"
+cp "$c/constant/materialProperties" "$c/materialProperties.good"
+printf 'materials\n{\n    gas { equationOfState { type idealGas; gamma 1.4; } constitutiveLaw { type neoHookean; } }\n}\n' \
+    > "$c/constant/materialProperties"
+set +e
+impactSph -case "$c" > "$c/log" 2>&1
+rc=$?
+set -e
+[ "$rc" -eq 1 ] || fail "constitutiveLaw in an impactSph material: exit status $rc, expected 1"
+grep -qF -- "$c/constant/materialProperties:3:" "$c/log" || fail "constitutiveLaw: no file:line 3 in: $(tail -n 3 "$c/log")"
+grep -qF -- "impactSph does not use a constitutiveLaw; it takes equationOfState and optionally strength" "$c/log" ||
+    fail "constitutiveLaw: unexpected message: $(tail -n 3 "$c/log")"
+cp "$c/materialProperties.good" "$c/constant/materialProperties"
+pass "six bad sphProperties entries: each an input error at sphProperties:$line with its choices or bound; a constitutiveLaw refused at materialProperties:3"

@@ -42,7 +42,8 @@ TEST(DissipationContract, EveryTypeDeclaresAKeywordSchema) {
     // Named here so that the library, and its registrations, are linked.
     const auto schemas = {RiemannDissipation::keywords(), MonaghanGingoldViscosity::keywords(),
                           NoDissipation::keywords()};
-    test::expectRegisteredSchemas(Dissipation::familyName, schemas, "libraries/sph/");
+    test::expectRegisteredSchemas(Dissipation::familyName, schemas, "libraries/sph/",
+                                  Dissipation::methodName);
     // Every keyword has a default: `dissipation { type <name>; }` is a whole model.
     for (const KeywordSchema& schema : schemas)
         for (const Keyword& k : schema.keywords())
