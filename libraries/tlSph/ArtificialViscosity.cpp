@@ -1,7 +1,10 @@
 // Artificial viscosity for total-Lagrangian SPH (Lee et al. 2016 Remark 6): a viscous stress
 // P_vis = (mu_vis/rho0) grad0 p, whose divergence is D(p) = (mu_vis/rho0) L[p] - the JST D2 term
-// with eps2_p c_p h = mu_vis/rho0. mu_vis [Pa s] is `viscosity`.
+// with eps2_p c_p h = mu_vis/rho0. mu_vis [Pa s] is `viscosity`. Per particle a:
+//     D(p)_a = (mu_vis / rho0_a) L[p]_a,   D(J) = 0.
 #include "tlSph/ArtificialViscosity.hpp"
+
+#include "core/Parallel.hpp"
 
 namespace mfdyn {
 
@@ -12,11 +15,20 @@ KeywordSchema ArtificialViscosity::keywords() {
 }
 
 ArtificialViscosity::ArtificialViscosity(const Dictionary& dict) {
-    c_.viscosity = keywords().read(dict).scalar("viscosity");
+    viscosity_ = keywords().read(dict).scalar("viscosity");
+}
+
+void ArtificialViscosity::evaluate(const Block& b) const {
+    if (!b.dissipationP || !b.lapP) return;
+    const int d = b.dimension;
+    parallelFor(b.size, [&](std::size_t a) {
+        const double k = viscosity_ / b.rho0[a];
+        for (int i = 0; i < d; ++i) b.dissipationP[a * d + i] = k * b.lapP[a * d + i];
+    });
 }
 
 std::string ArtificialViscosity::describe() const {
-    return "artificialViscosity: mu_vis " + std::to_string(c_.viscosity) + " Pa s";
+    return "artificialViscosity: mu_vis " + std::to_string(viscosity_) + " Pa s";
 }
 
 MFDYN_REGISTER(TlDissipation, ArtificialViscosity, "artificialViscosity",

@@ -7,11 +7,12 @@ class ArtificialViscosity final : public TlDissipation {
 public:
     static KeywordSchema keywords();
     explicit ArtificialViscosity(const Dictionary& dict);
-    TlDissipationCoefficients coefficients() const override { return c_; }
+    bool needsMomentumLaplacian() const override { return viscosity_ != 0; }
+    void evaluate(const Block& block) const override;
     std::string describe() const override;
 
 private:
-    TlDissipationCoefficients c_;
+    double viscosity_ = 0;  // mu_vis [Pa s]
 };
 
 }  // namespace mfdyn

@@ -8,7 +8,7 @@ class NoTlDissipation final : public TlDissipation {
 public:
     static KeywordSchema keywords() { return KeywordSchema(familyName, "none"); }
     explicit NoTlDissipation(const Dictionary& dict) { keywords().read(dict); }
-    TlDissipationCoefficients coefficients() const override { return {}; }
+    void evaluate(const Block&) const override {}
     std::string describe() const override { return "none"; }
 };
 

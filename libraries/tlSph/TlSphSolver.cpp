@@ -128,7 +128,6 @@ TlSphSolver<Dim>::TlSphSolver(SolverRun& run)
       kernel_(Kernel::New(settings_.dictionary("kernel"))),
       formulation_(formulationNamed(settings_.word("formulation"))),
       dissipationModel_(TlDissipation::New(settings_.dictionary("dissipation"))),
-      dissipation_(dissipationModel_->coefficients()),
       x_(particles_->position()),
       v_(particles_->vectorField("velocity")),
       m_(requireScalarField(*particles_, "mass", "particle masses")),
@@ -303,11 +302,13 @@ void TlSphSolver<Dim>::initialiseFields() {
     dFdt_.assign(n, Tensor<Dim>::Zero());
     if (H_) dHdt_.assign(n, Tensor<Dim>::Zero());
     if (J_) dJdt_.assign(n, 0.0);
-    if (dissipation_.momentum2 || dissipation_.momentum4 || dissipation_.viscosity)
+    // The operators the dissipation model asked for (the bi-Laplacian is built on the Laplacian).
+    const TlDissipation& model = *dissipationModel_;
+    if (model.needsMomentumLaplacian() || model.needsMomentumBiLaplacian())
         lapP_.assign(n, Vector<Dim>::Zero());
-    if (dissipation_.momentum4) lap2P_.assign(n, Vector<Dim>::Zero());
-    if (J_ && (dissipation_.jacobian2 || dissipation_.jacobian4)) lapJ_.assign(n, 0.0);
-    if (J_ && dissipation_.jacobian4) lap2J_.assign(n, 0.0);
+    if (model.needsMomentumBiLaplacian()) lap2P_.assign(n, Vector<Dim>::Zero());
+    if (J_ && (model.needsJacobianLaplacian() || model.needsJacobianBiLaplacian())) lapJ_.assign(n, 0.0);
+    if (J_ && model.needsJacobianBiLaplacian()) lap2J_.assign(n, 0.0);
 
     std::ostringstream s;
     s << "tlSph: formulation " << formulation_.name() << ", kernel " << kernel_->type() << ", spacing "
@@ -318,12 +319,8 @@ void TlSphSolver<Dim>::initialiseFields() {
       << (projectMomentum_ ? "yes" : "no") << ", dissipation " << (projectDissipation_ ? "yes" : "no")
       << ", jacobian " << (projectJacobian_ ? "yes" : "no");
     Log::info(s.str());
-    const double floor = courant() * courant() * courant() / 8;
-    if (dissipation_.momentum4 > 0 && dissipation_.momentum4 <= floor)
-        Log::warning(
-            "JST momentum eps4 " + std::to_string(dissipation_.momentum4) +
-            " is at or below maxCo^3/8 = " + std::to_string(floor) +
-            ": the RK2 scheme is anti-diffusive at short wavelengths (doc/methods/tl-jst-sph.md App. C)");
+    if (const std::string warning = model.stabilityWarning(courant()); !warning.empty())
+        Log::warning(warning);
 }
 
 template <int Dim>
@@ -495,9 +492,8 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
     pairInteractions_ += double(offsets[n]);
     rateTime.stop();
 
-    // Dissipation: D(U) = (eps2 c h [+ mu_vis/rho0]) L[U] - eps4 c h^3 L^2[U].
+    // Dissipation: the operators the model asked for, then D(p), D(J) from its evaluate().
     auto dissipationTime = phase("dissipation");
-    const double c = cpMax_, h = spacing_;
     std::vector<Vector<Dim>> dissipationP;
     std::vector<double> dissipationJ;
     if (!lap2P_.empty() || !lap2J_.empty()) {
@@ -521,21 +517,27 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
             if (!lap2J_.empty()) lap2J_[a] = L2J;
         });
     }
-    if (!lapP_.empty()) {
-        dissipationP.resize(n);
-        parallelFor(n, [&](std::size_t a) {
-            Vector<Dim> d = (dissipation_.momentum2 * c * h + dissipation_.viscosity / rho0_[a]) * lapP_[a];
-            if (!lap2P_.empty()) d -= dissipation_.momentum4 * c * h * h * h * lap2P_[a];
-            dissipationP[a] = d;
-        });
-    }
-    if (!lapJ_.empty()) {
-        dissipationJ.resize(n);
-        parallelFor(n, [&](std::size_t a) {
-            double d = dissipation_.jacobian2 * c * h * lapJ_[a];
-            if (!lap2J_.empty()) d -= dissipation_.jacobian4 * c * h * h * h * lap2J_[a];
-            dissipationJ[a] = d;
-        });
+    {
+        // The model sees its block as plain arrays (a vector is Dim contiguous doubles).
+        static_assert(sizeof(Vector<Dim>) == Dim * sizeof(double), "Vector<Dim> must be Dim packed doubles");
+        auto raw = [](const auto& v) {
+            return v.empty() ? nullptr : reinterpret_cast<const double*>(v.data());
+        };
+        TlDissipation::Block block;
+        block.size = n, block.dimension = Dim;
+        block.waveSpeed = cpMax_, block.spacing = spacing_;
+        block.rho0 = rho0_.data();
+        block.lapP = raw(lapP_), block.lap2P = raw(lap2P_);
+        block.lapJ = raw(lapJ_), block.lap2J = raw(lap2J_);
+        if (dissipationModel_->actsOnMomentum()) {
+            dissipationP.assign(n, Vector<Dim>::Zero());
+            block.dissipationP = reinterpret_cast<double*>(dissipationP.data());
+        }
+        if (J_ && dissipationModel_->actsOnJacobian()) {
+            dissipationJ.assign(n, 0.0);
+            block.dissipationJ = dissipationJ.data();
+        }
+        if (n && (block.dissipationP || block.dissipationJ)) dissipationModel_->evaluate(block);
     }
     dissipationTime.stop();
 

@@ -15,7 +15,7 @@
 //     spacing     0.05;                          // optional: particle spacing (default: largest V^(1/d))
 //     gradient    corrected;                     // corrected | uncorrected | correctedKernel
 //                                                // (default correctedKernel under lagrangeMultiplier)
-//     dissipation { type jst; momentum (0 0.125); jacobian (0 0); }   // tlDissipation family
+//     dissipation { type jst; momentum (0 0.125); jacobian (0 0); }   // family dissipation (tlSph)
 //     projection  { momentum yes; dissipation yes; jacobian yes; }    // the conservation projections
 //     waveSpeed   current;                       // c_p scaled by the largest stretch of F, H (or reference)
 //     bodyForce   { type uniformGravity; g (0 -9.81 0); }   // optional: E = rho0 a(x, t)
@@ -119,7 +119,6 @@ private:
     std::unique_ptr<Kernel> kernel_;
     Formulation formulation_;
     std::unique_ptr<TlDissipation> dissipationModel_;
-    TlDissipationCoefficients dissipation_;
     std::unique_ptr<MaterialSet<Dim>> materials_;  // a constitutive law per material
     std::unique_ptr<ReferenceOperators<Dim>> operators_;
     BoundaryConditionList<Dim> boundaries_;

@@ -16,6 +16,7 @@
 #include "particles/TimeDirectory.hpp"
 #include "particles/VtpReader.hpp"
 #include "solver/SolverRun.hpp"
+#include "tlSph/TlDissipation.hpp"
 #include "tlSph/TlSphSolver.hpp"
 
 #include <gtest/gtest.h>
@@ -78,7 +79,49 @@ const std::string base =
     "formulation pF;\nkernel { type wendlandC2; }\n"
     "dissipation { type jst; momentum (0.03125 0.125); }\n";
 
+// A dissipation model defined here, outside the library, selected by name: D(p) = rho0 a_push, a
+// uniform push that stands in for gravity (no Laplacian asked for).
+class TestPush final : public TlDissipation {
+public:
+    static KeywordSchema keywords() { return KeywordSchema(familyName, "testPush"); }
+    explicit TestPush(const Dictionary& dict) { keywords().read(dict); }
+    bool actsOnMomentum() const override { return true; }
+    void evaluate(const Block& b) const override {
+        for (std::size_t a = 0; a < b.size; ++a)
+            for (int i = 0; i < b.dimension; ++i) b.dissipationP[a * b.dimension + i] = b.rho0[a] * g[i];
+    }
+    std::string describe() const override { return "testPush"; }
+};
+MFDYN_REGISTER(TlDissipation, TestPush, "testPush", "test: D(p) = rho0 g");
+
+// Runs `dir` and checks x = X + v0 t + g t^2/2, v = v0 + g t at t = 0.002 (see the top).
+void expectFall(const fs::path& dir) {
+    const ParticleFile result = readVtp(dir / "0.002" / particleFileName);
+    const auto& set = particleSetCast<3>(*result.particles);
+    const auto& x = set.position();
+    const auto& X = set.requireField<Vector<3>>("referencePosition");
+    const auto& v = set.requireField<Vector<3>>("velocity");
+    ASSERT_EQ(x.size(), 64u);
+    const double t = 0.002;
+    for (std::size_t i = 0; i < 64; ++i) {
+        EXPECT_LT((x[i] - (X[i] + v0 * t + 0.5 * g * t * t)).norm(), 1e-12) << "particle " << i;
+        EXPECT_LT((v[i] - (v0 + g * t)).norm(), 1e-12) << "particle " << i;
+    }
+}
+
 }  // namespace
+
+// (issue 15 item 6a) The solver hands the model its block and applies the D(p) it writes: with the
+// momentum projections off (they would remove a uniform force), the push moves the body as gravity.
+TEST(BodyForce, aDissipationModelDefinedOutsideTheLibraryIsSelectedByNameAndItsDpApplied) {
+    const fs::path dir = makeCase("userDissipation",
+                                  "formulation pF;\nkernel { type wendlandC2; }\n"
+                                  "dissipation { type testPush; }\n"
+                                  "projection { momentum no; dissipation no; }\n");
+    ASSERT_EQ(runTlSph(dir), 0);
+    expectFall(dir);
+    fs::remove_all(dir);
+}
 
 TEST(BodyForce, aFreeBodyUnderUniformGravityFallsExactlyAsAParticle) {
     const fs::path dir =
