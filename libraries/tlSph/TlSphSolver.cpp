@@ -29,6 +29,7 @@
 #include "solver/BodyForce.hpp"
 #include "solver/InitialState.hpp"
 #include "solver/MaterialAssignment.hpp"
+#include "solver/SolverRegistry.hpp"
 #include "solver/SolverRun.hpp"
 #include "tlSph/LagrangeMultiplierProjection.hpp"
 #include "tlSph/MomentumProjection.hpp"
@@ -61,7 +62,7 @@ KeywordSchema TlSphSolver<Dim>::keywords() {
         .word("formulation", {"pF", "pFJ", "pFHJ", "displacement"},
               "the conservation laws integrated: {p, F}, {p, F, J}, {p, F, H, J}, or p with F = I + grad~ u")
         .dictionary("kernel", "the smoothing kernel (a kernel type; support 2h)")
-        .dictionary("dissipation", "the stabilisation D(p), D(J) (a tlDissipation type)")
+        .dictionary("dissipation", "the stabilisation D(p), D(J) (a dissipation (tlSph) type)")
         .dictionary("bodyForce", "body force per unit mass a(x, t), E = rho0 a (a bodyForce type)")
         .optional()
         .scalar("smoothingLengthRatio", "-", "h = smoothingLengthRatio x spacing")
@@ -774,5 +775,8 @@ std::vector<std::string> TlSphSolver<Dim>::summary(double loopSeconds) const {
 template class TlSphSolver<1>;
 template class TlSphSolver<2>;
 template class TlSphSolver<3>;
+
+MFDYN_REGISTER_SOLVER(TlSphSolver, "tlSph",
+                      "Total-Lagrangian mixed {p,F,H,J} JST-SPH for large-strain solid dynamics");
 
 }  // namespace mfdyn
