@@ -1,8 +1,7 @@
 // impactSph: updated-Lagrangian SPH for shocks and hypervelocity impact through inhomogeneous
 // media (Zisis 2017). See libraries/sph/SphSolver.hpp and tutorials/impactSph/.
 #include "core/Application.hpp"
-#include "solver/SolverRun.hpp"
-#include "sph/SphSolver.hpp"
+#include "solver/SolverRegistry.hpp"
 
 int main(int argc, char** argv) {
     const mfdyn::ApplicationInfo info{
@@ -13,6 +12,6 @@ int main(int argc, char** argv) {
         true,
         "impactSph"};
     return mfdyn::runApplication(argc, argv, info, [](const mfdyn::Arguments& args) {
-        return mfdyn::runSolver<mfdyn::SphSolver>(args, "impactSph");
+        return mfdyn::runSolver(args, "impactSph");  // registered by libmfdyn_sph
     });
 }
