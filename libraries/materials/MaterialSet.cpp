@@ -54,14 +54,16 @@ MaterialSet<Dim>::MaterialSet(const Dictionary& materialProperties, const Materi
                 throw dict.error(modelKeys[k], models.method + " does not use a " + modelKeys[k] +
                                                    "; it takes " + takes(models));
             if (uses[k] == ModelUse::required && !dict.findDict(modelKeys[k]))
-                throw dict.error("", "material '" + name + "' names no " + modelKeys[k] +
-                                         " { type ...; }: " + models.method + " takes " + takes(models));
+                throw InputError(dict.where(), dict.scope(),
+                                 "material '" + name + "' names no " + modelKeys[k] +
+                                     " { type ...; }: " + models.method + " takes " + takes(models));
         }
         if (models.equationOfStateOrConstitutiveLaw && !dict.findDict("equationOfState") &&
             !dict.findDict("constitutiveLaw"))
-            throw dict.error("", "material '" + name +
-                                     "' names neither an equationOfState nor a constitutiveLaw: " +
-                                     models.method + " takes " + takes(models));
+            throw InputError(dict.where(), dict.scope(),
+                             "material '" + name +
+                                 "' names neither an equationOfState nor a constitutiveLaw: " +
+                                 models.method + " takes " + takes(models));
 
         Material m;
         m.name = name;

@@ -84,6 +84,7 @@ TEST(MaterialSet, AMissingRequiredModelIsAnErrorNamingTheMaterial) {
     } catch (const InputError& e) {
         const std::string what = e.what();
         EXPECT_NE(what.find("material 'rubber' names no equationOfState"), std::string::npos) << what;
+        EXPECT_EQ(what.find("keyword ''"), std::string::npos) << what;  // located at the material, not a key
     }
 }
 
