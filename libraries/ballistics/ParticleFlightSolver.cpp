@@ -49,7 +49,9 @@ void ParticleFlightSolver<Dim>::computeAcceleration(double t) {
 
 template <int Dim>
 TimeStepVote ParticleFlightSolver<Dim>::stableTimeStep() {
-    const double vmax = std::sqrt(Reduce::max(v_.size(), [&](std::size_t i) { return v_[i].squaredNorm(); }));
+    // Global: the time-step vote every rank must agree on.
+    const double vmax =
+        std::sqrt(GlobalReduce::max(v_.size(), [&](std::size_t i) { return v_[i].squaredNorm(); }));
     TimeStepVote vote{std::numeric_limits<double>::infinity(), "Courant"};
     if (vmax > 0) vote.deltaT = time().maxCo() * lengthScale_ / vmax;
     if (auto force = bodyForce_->stableTimeStep(); force.deltaT < vote.deltaT) vote = force;
@@ -88,8 +90,9 @@ void ParticleFlightSolver<Dim>::checkFinite() const {
 template <int Dim>
 std::optional<double> ParticleFlightSolver<Dim>::potentialEnergy() const {
     const auto& m = particles_->template requireField<double>("mass");
-    return Reduce::sum<double>(x_.size(),
-                               [&](std::size_t i) { return m[i] * bodyForce_->potential(x_[i].data()); });
+    return GlobalReduce::sum<double>(
+        x_.size(),  // a conservation sum: over every rank
+        [&](std::size_t i) { return m[i] * bodyForce_->potential(x_[i].data()); });
 }
 
 template class ParticleFlightSolver<1>;
