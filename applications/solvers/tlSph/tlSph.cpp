@@ -1,8 +1,7 @@
 // tlSph: total-Lagrangian mixed {p, F, H, J} SPH with JST stabilisation for large-strain solid
 // dynamics (Lee et al. 2016). See libraries/tlSph/TlSphSolver.hpp and tutorials/tlSph/.
 #include "core/Application.hpp"
-#include "solver/SolverRun.hpp"
-#include "tlSph/TlSphSolver.hpp"
+#include "solver/SolverRegistry.hpp"
 
 int main(int argc, char** argv) {
     const mfdyn::ApplicationInfo info{
@@ -14,6 +13,6 @@ int main(int argc, char** argv) {
         true,
         "tlSph"};
     return mfdyn::runApplication(argc, argv, info, [](const mfdyn::Arguments& args) {
-        return mfdyn::runSolver<mfdyn::TlSphSolver>(args, "tlSph");
+        return mfdyn::runSolver(args, "tlSph");  // registered by libmfdyn_tlSph
     });
 }

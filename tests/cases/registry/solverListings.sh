@@ -4,6 +4,8 @@
 #    drop the library and the solver would not be found by name;
 #  - `<app> -describe <solver>` gives the solver's dictionary and keywords, and `<app>
 #    -listModels` lists them before every family;
+#  - impactSph and tlSph name their dictionary, their keywords and their own dissipation family;
+#  - `-describe dissipation` lists every method's dissipation family, each by its scoped name;
 #  - an unknown name is an error with exit status 1 naming the families.
 set -euo pipefail
 BUILD="$1"
@@ -35,6 +37,31 @@ family=$(grep -n "^equationOfState$" list.txt | cut -d: -f1)
     fail "the solver's keywords are not listed before the families: $(head -n 8 list.txt)"
 [ "$(grep -c "lengthScale" list.txt)" = 1 ] || fail "lengthScale listed more than once"
 grep -q "^solver$" list.txt || fail "no solver family in the listing"
+
+# impactSph and tlSph: each describes its own solver with its dictionary and keywords, and lists
+# them before the families.
+for pair in impactSph:sphProperties tlSph:tlSphProperties; do
+    app=${pair%%:*} dict=${pair#*:}
+    "$app" -describe "$app" > "describe.$app" 2>&1 || fail "$app -describe $app failed: $(cat "describe.$app")"
+    grep -q "^solver $app: " "describe.$app" || fail "$app -describe $app: $(head -n 3 "describe.$app")"
+    grep -q "dictionary: constant/$dict" "describe.$app" || fail "$app: no dictionary: $(cat "describe.$app")"
+    grep -q "^    keywords:" "describe.$app" || fail "$app -describe $app shows no keywords"
+    grep -q "^        dissipation  \[-\]" "describe.$app" || fail "$app: no dissipation keyword: $(cat "describe.$app")"
+    grep -q "families of this method.*$app/dissipation" "describe.$app" ||
+        fail "$app: its dissipation family is not named: $(cat "describe.$app")"
+    "$app" -listModels > "list.$app" 2>&1 || fail "$app -listModels failed"
+    head -n 1 "list.$app" | grep -q "^solver $app: " || fail "$app -listModels starts: $(head -n 2 "list.$app")"
+    grep -q "^    keywords of constant/$dict:" "list.$app" || fail "$app -listModels: $(head -n 3 "list.$app")"
+done
+
+# Scoped families: `dissipation` names each method's, `tlSph/dissipation` only tlSph's.
+particleFlight -describe dissipation > dissipation.txt 2>&1 || fail "-describe dissipation failed"
+for method in impactSph tlSph; do
+    grep -q "^dissipation ($method)$" dissipation.txt ||
+        fail "-describe dissipation does not list dissipation ($method): $(grep -v '^ ' dissipation.txt)"
+done
+particleFlight -describe tlSph/dissipation > tl.txt 2>&1 || fail "-describe tlSph/dissipation failed"
+grep -q "^dissipation (tlSph)$" tl.txt && ! grep -q "(impactSph)" tl.txt || fail "tlSph/dissipation: $(cat tl.txt)"
 
 # An unknown name: exit status 1, the families listed by their names.
 status=0
