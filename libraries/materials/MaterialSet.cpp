@@ -51,8 +51,8 @@ MaterialSet<Dim>::MaterialSet(const Dictionary& materialProperties, const Materi
         const Dictionary& dict = all.subDict(name);
         for (int k = 0; k < 3; ++k) {
             if (uses[k] == ModelUse::refused && dict.found(modelKeys[k]))
-                throw dict.error(modelKeys[k], models.method + " does not use a " + modelKeys[k] +
-                                                   "; it takes " + takes(models));
+                throw dict.error(modelKeys[k],
+                                 models.method + " takes no " + modelKeys[k] + "; it takes " + takes(models));
             if (uses[k] == ModelUse::required && !dict.findDict(modelKeys[k]))
                 throw InputError(dict.where(), dict.scope(),
                                  "material '" + name + "' names no " + modelKeys[k] +

@@ -41,7 +41,7 @@ rc=$?
 set -e
 [ "$rc" -eq 1 ] || fail "constitutiveLaw in an impactSph material: exit status $rc, expected 1"
 grep -qF -- "$c/constant/materialProperties:3:" "$c/log" || fail "constitutiveLaw: no file:line 3 in: $(tail -n 3 "$c/log")"
-grep -qF -- "impactSph does not use a constitutiveLaw; it takes equationOfState and optionally strength" "$c/log" ||
+grep -qF -- "impactSph takes no constitutiveLaw; it takes equationOfState and optionally strength" "$c/log" ||
     fail "constitutiveLaw: unexpected message: $(tail -n 3 "$c/log")"
 cp "$c/materialProperties.good" "$c/constant/materialProperties"
 pass "six bad sphProperties entries: each an input error at sphProperties:$line with its choices or bound; a constitutiveLaw refused at materialProperties:3"

@@ -33,7 +33,7 @@ refused maxCoAboveOne system/controlDict "^maxCo" "tlSph needs maxCo in (0, 1]" 
     sed -i "s/^maxCo .*/maxCo 1.5;/" system/controlDict
 refused formulationDictionary constant/tlSphProperties "^formulation" "formulation is now a word of tlSphProperties, .formulation pFJ;." \
     sed -i 's/^formulation .*/formulation { type pF; }/' constant/tlSphProperties
-refused equationOfState constant/materialProperties "equationOfState {" "tlSph does not use a" \
+refused equationOfState constant/materialProperties "equationOfState {" "tlSph takes no equationOfState" \
     sed -i 's/constitutiveLaw { type linearElastic; }/constitutiveLaw { type linearElastic; }\n        equationOfState { type idealGas; gamma 1.4; }/' constant/materialProperties
 # The new spelling runs, and without maxCo the method's 0.3 applies: the same steps as maxCo 0.3.
 good="$WORK/good"; cp -r "$base" "$good"; run "$good" tlSph

@@ -70,7 +70,7 @@ TEST(MaterialSet, AModelTheMethodDoesNotTakeIsAnErrorAtItsEntry) {
     } catch (const InputError& e) {
         const std::string what = e.what();
         EXPECT_NE(what.find("materialProperties:4:"), std::string::npos) << what;  // file:line of the entry
-        EXPECT_NE(what.find("impactSph does not use a constitutiveLaw"), std::string::npos) << what;
+        EXPECT_NE(what.find("impactSph takes no constitutiveLaw"), std::string::npos) << what;
         EXPECT_NE(what.find("equationOfState"), std::string::npos) << what;  // what it takes
     }
 }
