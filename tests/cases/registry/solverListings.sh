@@ -1,4 +1,4 @@
-# The solver registry seen from the built applications. $1 = build directory.
+# The solver registry seen from the built applications. $1 = build directory, $2 = source tree.
 #  - each solver application records its method's library as NEEDED: the registration is a
 #    static object there that the program never references, so a linker with --as-needed would
 #    drop the library and the solver would not be found by name;
@@ -6,9 +6,12 @@
 #    -listModels` lists them before every family;
 #  - impactSph and tlSph name their dictionary, their keywords and their own dissipation family;
 #  - `-describe dissipation` lists every method's dissipation family, each by its scoped name;
+#  - mfDoc writes doc/models/solver/<name>.md and doc/models/<method>/<family>/<type>.md, and
+#    every relative link of every page (a scoped page is one folder deeper) names a file;
 #  - an unknown name is an error with exit status 1 naming the families.
 set -euo pipefail
 BUILD="$1"
+SOURCE="${2:-}"
 export PATH="$BUILD/bin:$PATH"
 WORK="$(mktemp -d "${TMPDIR:-/tmp}/mfdyn-test.XXXXXX")"
 trap 'rm -rf "$WORK"' EXIT
@@ -69,4 +72,26 @@ particleFlight -describe solver/particleFlite > bad.txt 2>&1 || status=$?
 [ "$status" = 1 ] || fail "an unknown -describe gave status $status"
 grep -q "no model family or type 'solver/particleFlite'; did you mean 'solver/particleFlight'" bad.txt ||
     fail "unknown -describe message: $(cat bad.txt)"
+# mfDoc's layout, and its links resolved from where the pages are committed (doc/models).
+if [ -n "$SOURCE" ]; then
+    mfDoc -output "$WORK/models" > mfdoc.txt 2>&1 || fail "mfDoc failed: $(cat mfdoc.txt)"
+    for page in solver/particleFlight.md solver/impactSph.md solver/tlSph.md \
+        impactSph/dissipation/riemann.md tlSph/dissipation/jst.md equationOfState/idealGas.md; do
+        [ -f "$WORK/models/$page" ] || fail "mfDoc wrote no $page: $(cd "$WORK/models" && find . -name '*.md' | head)"
+    done
+    grep -q "(solver/tlSph.md)" "$WORK/models/README.md" || fail "the README does not index solver/tlSph.md"
+    grep -q "(tlSph/dissipation/jst.md)" "$WORK/models/README.md" || fail "the README does not index tlSph/dissipation/jst.md"
+    grep -q "\[jst\](../tlSph/dissipation/jst.md)" "$WORK/models/solver/tlSph.md" ||
+        fail "tlSph's page does not link its dissipation types"
+    checked=0
+    while IFS= read -r page; do
+        rel=${page#"$WORK/models/"}
+        dir=$(dirname "$SOURCE/doc/models/$rel")
+        for link in $(grep -o '](\.[^)#]*)' "$page" | sed 's/^](//; s/)$//'); do
+            [ -e "$dir/$link" ] || fail "$rel links $link, which does not exist"
+            checked=$((checked + 1))
+        done
+    done < <(find "$WORK/models" -name '*.md')
+    [ "$checked" -gt 100 ] || fail "only $checked links checked: the link pattern no longer matches the pages"
+fi
 echo "PASS: solver registry listings"
