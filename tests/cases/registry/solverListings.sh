@@ -8,6 +8,7 @@
 #  - `-describe dissipation` lists every method's dissipation family, each by its scoped name;
 #  - mfDoc writes doc/models/solver/<name>.md and doc/models/<method>/<family>/<type>.md, and
 #    every relative link of every page (a scoped page is one folder deeper) names a file;
+#  - installed (cmake --install into a fresh prefix), particleFlight finds its solver and runs;
 #  - an unknown name is an error with exit status 1 naming the families.
 set -euo pipefail
 BUILD="$1"
@@ -93,5 +94,16 @@ if [ -n "$SOURCE" ]; then
         done
     done < <(find "$WORK/models" -name '*.md')
     [ "$checked" -gt 100 ] || fail "only $checked links checked: the link pattern no longer matches the pages"
+fi
+# Installed: the copy of the program and libraries in a prefix selects its solver by name and runs
+# the proof case. LD_LIBRARY_PATH because the installed RUNPATH is the configured
+# CMAKE_INSTALL_PREFIX, not the --prefix given here.
+if [ -n "$SOURCE" ]; then
+    cmake --install "$BUILD" --prefix "$WORK/prefix" > install.txt 2>&1 || fail "install failed: $(tail install.txt)"
+    cp -r "$SOURCE/tests/cases/framework/freeFall" "$WORK/installed"
+    env -i PATH=/usr/bin:/bin HOME="$WORK" OMP_WAIT_POLICY=PASSIVE LD_LIBRARY_PATH="$WORK/prefix/lib" \
+        bash -c "'$WORK/prefix/bin/particleGen' -case '$WORK/installed' && '$WORK/prefix/bin/particleFlight' -case '$WORK/installed'" \
+        > installed.txt 2>&1 || fail "the installed particleFlight failed: $(tail installed.txt)"
+    grep -q "^End" installed.txt || fail "the installed particleFlight did not finish: $(tail installed.txt)"
 fi
 echo "PASS: solver registry listings"
