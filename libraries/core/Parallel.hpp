@@ -11,7 +11,6 @@
 //                 on: time-step votes, conservation sums and error norms, state-check counts,
 //                 projections. A global reduction is collective: every rank must reach it, so
 //                 it must never sit behind a rank-local early return (that would deadlock).
-// `Reduce` is the old name of GlobalReduce, kept while call sites move to one of the two.
 //
 // Reductions are deterministic for any thread count: the range is cut into fixed blocks
 // (independent of the number of threads), each block is summed in order, and the block sums
@@ -158,8 +157,5 @@ struct GlobalReduce {
         return globalFirstMessage(key, std::move(text));
     }
 };
-
-// The old name: every existing call site was a global one or is moved to LocalReduce.
-using Reduce = GlobalReduce;
 
 }  // namespace mfdyn
