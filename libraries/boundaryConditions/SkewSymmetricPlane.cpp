@@ -24,16 +24,6 @@
 
 namespace mfdyn {
 
-namespace {
-
-template <int Dim>
-const std::vector<Vector<Dim>>& referenceOrCurrent(const ParticleSet<Dim>& particles) {
-    if (const auto* x0 = particles.template findField<Vector<Dim>>("referencePosition")) return *x0;
-    return particles.position();
-}
-
-}  // namespace
-
 template <int Dim>
 KeywordSchema SkewSymmetricPlane<Dim>::keywords() {
     return KeywordSchema("boundaryCondition", "skewSymmetricPlane")
@@ -47,8 +37,9 @@ SkewSymmetricPlane<Dim>::SkewSymmetricPlane(const Dictionary& dict, const Partic
 
 template <int Dim>
 SkewSymmetricPlane<Dim>::SkewSymmetricPlane(const KeywordValues& values, const ParticleSet<Dim>& particles)
-    : BoundaryCondition<Dim>(values, particles, true), plane_(values, referenceOrCurrent(particles)) {
-    const auto& x = referenceOrCurrent(particles);
+    : BoundaryCondition<Dim>(values, particles, true),
+      plane_(values, particles.referenceOrCurrentPosition()) {
+    const auto& x = particles.referenceOrCurrentPosition();
     const auto& id = particles.globalId();
     for (const std::size_t i : this->selection_.indices())
         if (std::abs(plane_.signedDistance(x[i])) <= plane_.tolerance()) {

@@ -1,5 +1,6 @@
 #include "core/Time.hpp"
 
+#include "core/ExactReal.hpp"
 #include "core/Log.hpp"
 
 #include <algorithm>
@@ -41,23 +42,6 @@ Enum readChoice(const Dictionary& dict, const std::string& key, Enum fallback,
     std::string message = "'" + word + "' is not a valid " + key + "; valid choices: " + valid;
     if (auto guess = closestMatch(word, names); !guess.empty()) message += " (did you mean '" + guess + "'?)";
     throw dict.error(key, message);
-}
-
-std::string hexDouble(double x) {
-    char s[64];
-    std::snprintf(s, sizeof s, "%a", x);
-    return s;
-}
-
-// A finite real written as hexadecimal (exact). strtod alone would take "", "nan" and "inf".
-double parseHexDouble(const Dictionary& state, const std::string& key) {
-    const std::string text = state.get<std::string>(key);
-    char* end = nullptr;
-    const double x = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || !std::isfinite(x))
-        throw state.error(key, "expected an exact finite (hexadecimal) real, found '" + text +
-                                   "': the state file is damaged; restart from an earlier time");
-    return x;
 }
 
 std::string show(double x) {
@@ -209,7 +193,7 @@ void Time::start(double value, const std::string& name) {
 }
 
 void Time::restore(const Dictionary& state) {
-    const double value = parseHexDouble(state, "timeExact");
+    const double value = readExactReal(state, "timeExact");
     if (value < 0) throw state.error("timeExact", "the time " + show(value) + " is negative");
     // The directory's name is the time rounded to its digits: a state that disagrees was copied
     // from elsewhere or damaged, and would put the run at a time other than the one it claims.
@@ -225,9 +209,9 @@ void Time::restore(const Dictionary& state) {
                                                " does not match the directory name '" + timeName_ +
                                                "': the state belongs to another time");
     }
-    const double dt = parseHexDouble(state, "deltaTExact");
+    const double dt = readExactReal(state, "deltaTExact");
     if (!(dt > 0)) throw state.error("deltaTExact", "the time step " + show(dt) + " is not positive");
-    const double desired = parseHexDouble(state, "desiredDeltaTExact");
+    const double desired = readExactReal(state, "desiredDeltaTExact");
     if (desired < 0)
         throw state.error("desiredDeltaTExact", "the time step " + show(desired) + " is negative");
     const long long index = state.get<long long>("timeIndex");
@@ -301,9 +285,9 @@ std::string Time::state() const {
     std::ostringstream s;
     s.precision(17);
     s << "time               " << value_ << ";\n"
-      << "timeExact          \"" << hexDouble(value_) << "\";\n"
-      << "deltaTExact        \"" << hexDouble(deltaT_) << "\";\n"
-      << "desiredDeltaTExact \"" << hexDouble(desiredDeltaT_) << "\";\n"
+      << "timeExact          \"" << exactRealText(value_) << "\";\n"
+      << "deltaTExact        \"" << exactRealText(deltaT_) << "\";\n"
+      << "desiredDeltaTExact \"" << exactRealText(desiredDeltaT_) << "\";\n"
       << "timeIndex          " << timeIndex_ << ";\n"
       << "writeIndex         " << writeIndex_ << ";\n";
     return s.str();

@@ -35,6 +35,13 @@ public:
 
     std::vector<VectorType>& position() { return field<VectorType>("position"); }
     const std::vector<VectorType>& position() const { return requireField<VectorType>("position"); }
+    // The reference configuration X of a total-Lagrangian method where the set carries one
+    // (`referencePosition`), else the current positions: what a plane or a constraint set up at the
+    // start is measured against.
+    const std::vector<VectorType>& referenceOrCurrentPosition() const {
+        if (const auto* x0 = this->template findField<VectorType>("referencePosition")) return *x0;
+        return position();
+    }
     std::vector<std::int64_t>& globalId() { return field<std::int64_t>("globalId"); }
     const std::vector<std::int64_t>& globalId() const { return requireField<std::int64_t>("globalId"); }
     std::vector<std::int64_t>& region() { return field<std::int64_t>("region"); }

@@ -26,6 +26,7 @@
 // Time step: Δt ≤ ξ min_i h_i/(|v_i| + c_i) and, optionally, Δt ≤ ξ_ρ min_i ρ_i/|dρ_i/dt| (note §4).
 #include "sph/SphSolver.hpp"
 
+#include "core/ExactReal.hpp"
 #include "core/Log.hpp"
 #include "core/MessageText.hpp"
 #include "core/Parallel.hpp"
@@ -45,12 +46,6 @@
 namespace mfdyn {
 
 namespace {
-
-std::string hex(double x) {
-    char s[64];
-    std::snprintf(s, sizeof s, "%a", x);
-    return s;
-}
 
 // e with P(ρ, e) = target, by bracketing and bisection (EOS are increasing in e at fixed ρ for
 // every model here; the bracket grows until it holds the root).
@@ -742,21 +737,20 @@ std::optional<double> SphSolver<Dim>::internalEnergy() const {
 template <int Dim>
 std::string SphSolver<Dim>::solverState() const {
     return std::string("leapfrogStarted    ") + (started_ ? "yes" : "no") + ";\npreviousDeltaTExact \"" +
-           hex(previousDeltaT_) + "\";\n";
+           exactRealText(previousDeltaT_) + "\";\n";
 }
 
 template <int Dim>
 void SphSolver<Dim>::restoreSolverState(const Dictionary& state) {
     started_ = state.getOrDefault<bool>("leapfrogStarted", false);
-    const std::string text = state.getOrDefault<std::string>("previousDeltaTExact", "0x0p+0");
-    // Read whole and checked, as Time reads its own exact reals: strtod alone takes "", "nan", "inf"
-    // and trailing garbage, and a damaged value resumed the leapfrog with a wrong half step.
-    char* end = nullptr;
-    const double value = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || !std::isfinite(value) || value < 0)
+    // Read whole and checked, as Time reads its own exact reals (core/ExactReal): a damaged value
+    // would resume the leapfrog with a wrong half step.
+    const double value =
+        state.found("previousDeltaTExact") ? readExactReal(state, "previousDeltaTExact") : 0.0;
+    if (value < 0)
         throw state.error("previousDeltaTExact",
-                          "expected an exact finite (hexadecimal) time step >= 0, found '" + excerpt(text) +
-                              "': the state file is damaged; restart from an earlier time");
+                          "expected a time step >= 0, found " + exactRealText(value) +
+                              ": the state file is damaged; restart from an earlier time");
     previousDeltaT_ = value;
     // The file carries ρ, P, c, h as written; the half-step state resumes the leapfrog exactly.
 }

@@ -93,12 +93,6 @@ int rangeBasis(const Tensor<Dim>& C, Tensor<Dim>& Q, double threshold) {
     return r;
 }
 
-template <int Dim>
-const std::vector<Vector<Dim>>& referenceOrCurrent(const ParticleSet<Dim>& particles) {
-    if (const auto* x0 = particles.template findField<Vector<Dim>>("referencePosition")) return *x0;
-    return particles.position();
-}
-
 }  // namespace
 
 template <int Dim>
@@ -385,7 +379,7 @@ std::vector<typename LagrangeMultiplierProjection<Dim>::Constraint> constraintsF
         if (!fresh) it->second = projectorUnion<Dim>(it->second, C);
     };
     const Tensor<Dim> I = Tensor<Dim>::Identity();
-    const auto& X = referenceOrCurrent(particles);
+    const auto& X = particles.referenceOrCurrentPosition();
     for (std::size_t k = 0; k < bcs.size(); ++k) {
         const BoundaryCondition<Dim>& bc = bcs[k];
         if (!bc.active(t)) continue;
