@@ -198,6 +198,17 @@ struct TypeDoc {
     std::string dimensions;  // "1D, 2D, 3D" or ""
 };
 
+// The "Equations and source" body of a model's or a solver's page: its source file's opening
+// comment, where the equations and their source are written.
+void equationsAndSource(std::ostream& s, const RegistryItem& item, const fs::path& source) {
+    const std::string comment =
+        item.sourceFile.empty() ? std::string() : openingComment(readFile(source / item.sourceFile));
+    if (comment.empty())
+        s << "The source file does not open with a comment block.\n\n";
+    else
+        s << "From the opening comment of `" << item.sourceFile << "`:\n\n```\n" << comment << "```\n\n";
+}
+
 std::string page(const TypeDoc& doc, const std::vector<std::string>& related, const fs::path& source,
                  const std::map<std::string, std::vector<TutorialUse>>& tutorials,
                  const std::map<std::string, int>& familiesOfName) {
@@ -237,12 +248,7 @@ std::string page(const TypeDoc& doc, const std::vector<std::string>& related, co
 
     // Equations and source
     s << "## Equations and source\n\n";
-    const std::string comment =
-        item.sourceFile.empty() ? std::string() : openingComment(readFile(source / item.sourceFile));
-    if (comment.empty())
-        s << "The source file does not open with a comment block.\n\n";
-    else
-        s << "From the opening comment of `" << item.sourceFile << "`:\n\n```\n" << comment << "```\n\n";
+    equationsAndSource(s, item, source);
 
     // Restrictions
     s << "## Restrictions\n\n";
@@ -347,12 +353,7 @@ std::string solverPage(const RegistryItem& item, const std::vector<const Registr
     }
 
     s << "## Equations and source\n\n";
-    const std::string comment =
-        item.sourceFile.empty() ? std::string() : openingComment(readFile(source / item.sourceFile));
-    if (comment.empty())
-        s << "The source file does not open with a comment block.\n\n";
-    else
-        s << "From the opening comment of `" << item.sourceFile << "`:\n\n```\n" << comment << "```\n\n";
+    equationsAndSource(s, item, source);
 
     s << "## Example\n\n";
     std::vector<std::string> cases;
