@@ -127,18 +127,7 @@ TEST(BodyForce, aFreeBodyUnderUniformGravityFallsExactlyAsAParticle) {
     const fs::path dir =
         makeCase("gravity", base + "bodyForce { type uniformGravity; g (0.5 -9.81 0.25); }\n");
     ASSERT_EQ(runTlSph(dir), 0);
-    const ParticleFile result = readVtp(dir / "0.002" / particleFileName);
-    const auto& set = particleSetCast<3>(*result.particles);
-    const auto& x = set.position();
-    const auto& X = set.requireField<Vector<3>>("referencePosition");
-    const auto& v = set.requireField<Vector<3>>("velocity");
-    ASSERT_EQ(x.size(), 64u);
-    const double t = 0.002;
-    for (std::size_t i = 0; i < 64; ++i) {
-        const Vector<3> exact = X[i] + v0 * t + 0.5 * g * t * t;
-        EXPECT_LT((x[i] - exact).norm(), 1e-12) << "particle " << i;
-        EXPECT_LT((v[i] - (v0 + g * t)).norm(), 1e-12) << "particle " << i;
-    }
+    expectFall(dir);
     fs::remove_all(dir);
 }
 
