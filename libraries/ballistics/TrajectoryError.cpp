@@ -5,7 +5,10 @@
 //
 // N, the sums and the maximum are over the particles of every rank (GlobalReduce, globalMax).
 //
-// written to errorNorms.csv (time,field,L1,L2,Linf) for fields `position` and `velocity`.
+// written to errorNorms.csv (time,field,L1,L2,Linf) for fields `position` and `velocity`. The
+// relative error of the summary divides by the same norms of the exact displacement since the
+// start, |x_exact(t) - x_a(t0)| (the position's own size depends on where the origin is), and of
+// the exact speed |v_exact(t)|.
 #include "ballistics/TrajectoryError.hpp"
 
 #include "ballistics/ParticleFlightSolver.hpp"
@@ -63,10 +66,16 @@ void TrajectoryError::write() {
     const FieldBase& x = fields.field("position");
     const FieldBase& v = fields.field("velocity");
     const double tau = context().time().value() - t0_;
+    // The scales' maxima ride in the sum as maxima (+= is the combination, as the reduction
+    // applies it): one reduction for the sums and the scales, as before the scales were added.
     struct Norms {
         double count = 0, l1x = 0, l2x = 0, l1v = 0, l2v = 0;  // count: N over every rank
+        double l1s = 0, l2s = 0, l1u = 0, l2u = 0;             // the scales: exact displacement, speed
+        double maxS = 0, maxU = 0;
         Norms& operator+=(const Norms& o) {
             count += o.count, l1x += o.l1x, l2x += o.l2x, l1v += o.l1v, l2v += o.l2v;
+            l1s += o.l1s, l2s += o.l2s, l1u += o.l1u, l2u += o.l2u;
+            maxS = std::max(maxS, o.maxS), maxU = std::max(maxU, o.maxU);
             return *this;
         }
     };
@@ -74,21 +83,26 @@ void TrajectoryError::write() {
     const Norms sums = GlobalReduce::sum<Norms>(n, [&](std::size_t i) {
         double xe[3], ve[3];
         solver_.bodyForce().exactTrajectory(&x0_[i * dim], &v0_[i * dim], tau, xe, ve);
-        double dx = 0, dv = 0;
+        double dx = 0, dv = 0, ds = 0, du = 0;
         for (int d = 0; d < dim; ++d) {
             dx += std::pow(x.component(i, d) - xe[d], 2);
             dv += std::pow(v.component(i, d) - ve[d], 2);
+            ds += std::pow(xe[d] - x0_[i * dim + d], 2);
+            du += ve[d] * ve[d];
         }
         ex[i] = std::sqrt(dx), ev[i] = std::sqrt(dv);
-        return Norms{1, ex[i], dx, ev[i], dv};
+        const double sx = std::sqrt(ds), sv = std::sqrt(du);
+        return Norms{1, ex[i], dx, ev[i], dv, sx, ds, sv, du, sx, sv};
     });
     if (sums.count == 0) return;  // the same on every rank
     double maxX = 0, maxV = 0;
     for (std::size_t i = 0; i < n; ++i) maxX = std::max(maxX, ex[i]), maxV = std::max(maxV, ev[i]);
     maxX = globalMax(maxX), maxV = globalMax(maxV);
-    const double t = context().time().value();
-    norms_.add(t, "position", sums.l1x / sums.count, std::sqrt(sums.l2x / sums.count), maxX);
-    norms_.add(t, "velocity", sums.l1v / sums.count, std::sqrt(sums.l2v / sums.count), maxV);
+    const double t = context().time().value(), N = sums.count;
+    norms_.add(t, "position", sums.l1x / N, std::sqrt(sums.l2x / N), maxX, sums.l1s / N,
+               std::sqrt(sums.l2s / N), sums.maxS);
+    norms_.add(t, "velocity", sums.l1v / N, std::sqrt(sums.l2v / N), maxV, sums.l1u / N,
+               std::sqrt(sums.l2u / N), sums.maxU);
 }
 
 MFDYN_REGISTER(FunctionObject, TrajectoryError, "trajectoryError",

@@ -18,6 +18,8 @@ public:
     void write() override;
     std::vector<ErrorNorm> errorNorms() const override { return norms_.latest(); }
     std::vector<std::string> summary() const override;
+    // peakTipDisplacement: the largest |u_x| of the tip so far against the exact largest.
+    std::vector<ReferenceValue> referenceValues() const override;
 
     // The tip particle's index now and its reference axial coordinate.
     std::size_t tipIndex() const { return tip_; }
@@ -40,6 +42,7 @@ private:
     std::unique_ptr<CsvFile> csv_;
     ErrorNormWriter norms_;
     History velocityError_, displacementError_;
+    History velocityExact_, displacementExact_;  // the same norms of the exact histories (scales)
     std::size_t rows_ = 0;
     double peak_ = 0, peakTime_ = 0;
 };

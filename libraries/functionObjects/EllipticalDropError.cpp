@@ -155,6 +155,7 @@ void EllipticalDropError::write() {
         a, aExact, 100 * (a - aExact) / aExact, b, bExact, 100 * (b - bExact) / bExact, a * b,
         aExact * bExact);
     summary_ = {line};
+    references_ = {{"a", a, aExact}, {"b", b, bExact}, {"ab", a * b, aExact * bExact}};
 }
 
 MFDYN_REGISTER(

@@ -16,6 +16,8 @@ public:
     void write() override;
     std::vector<ErrorNorm> errorNorms() const override { return norms_.latest(); }
     std::vector<std::string> summary() const override { return summary_; }
+    // a, b, ab: the semi-axes and their product against the exact ones.
+    std::vector<ReferenceValue> referenceValues() const override { return references_; }
 
 private:
     EllipticalDropError(const KeywordValues& values, const std::string& name, const RunContext& context);
@@ -24,6 +26,7 @@ private:
     ErrorNormWriter norms_;
     std::unique_ptr<CsvFile> axes_;
     std::vector<std::string> summary_;
+    std::vector<ReferenceValue> references_;
 };
 
 }  // namespace mfdyn

@@ -3,6 +3,9 @@
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <tuple>
+
+#include <sys/resource.h>
 
 namespace mfdyn {
 
@@ -24,6 +27,13 @@ std::string relativeErrorText(double value, double exact) {
     else
         std::snprintf(s, sizeof s, "%+.2f%%", 100 * (value - exact) / std::abs(exact));
     return s;
+}
+
+double processCpuSeconds() {
+    struct rusage usage {};
+    if (getrusage(RUSAGE_SELF, &usage) != 0) return std::numeric_limits<double>::quiet_NaN();
+    return double(usage.ru_utime.tv_sec) + 1e-6 * double(usage.ru_utime.tv_usec) +
+           double(usage.ru_stime.tv_sec) + 1e-6 * double(usage.ru_stime.tv_usec);
 }
 
 FunctionObject::FunctionObject(const Dictionary& dict, const std::string& name, const RunContext& context)
@@ -77,6 +87,13 @@ bool FunctionObject::due(bool solverWrites) {
     return true;
 }
 
+void FunctionObject::execute(bool solverWrites) {
+    if (!due(solverWrites)) return;
+    write();
+    // After the write: the CPU time the error it measured had cost, the write's own included.
+    lastWrite_ = {context_.time().timeIndex(), context_.time().value(), processCpuSeconds()};
+}
+
 const FieldBase& FunctionObject::requireField(const Dictionary& dict, const std::string& key,
                                               const std::string& name) const {
     if (const FieldBase* f = context_.fields().findField(name)) return *f;
@@ -95,14 +112,21 @@ ErrorNormWriter::ErrorNormWriter(const std::filesystem::path& file, std::string 
     : csv_(file, {"time", "field", "L1", "L2", "Linf"}, startTime), source_(std::move(source)) {}
 
 void ErrorNormWriter::add(double time, const std::string& field, double L1, double L2, double Linf) {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    add(time, field, L1, L2, Linf, nan, nan, nan);
+}
+
+void ErrorNormWriter::add(double time, const std::string& field, double L1, double L2, double Linf,
+                          double exactL1, double exactL2, double exactLinf) {
     csv_.row(time, field, {L1, L2, Linf});
+    const ErrorNorm latest{source_, field, time, L1, L2, Linf, exactL1, exactL2, exactLinf};
     for (auto& norm : latest_) {
         if (norm.field == field) {
-            norm = {source_, field, time, L1, L2, Linf};
+            norm = latest;
             return;
         }
     }
-    latest_.push_back({source_, field, time, L1, L2, Linf});
+    latest_.push_back(latest);
 }
 
 FunctionObjectList::FunctionObjectList(const Dictionary& controlDict, const RunContext& context) {
@@ -117,14 +141,34 @@ FunctionObjectList::FunctionObjectList(const Dictionary& controlDict, const RunC
 }
 
 void FunctionObjectList::execute(bool solverWrites) {
-    for (auto& object : objects_)
-        if (object->due(solverWrites)) object->write();
+    for (auto& object : objects_) object->execute(solverWrites);
 }
 
 std::vector<ErrorNorm> FunctionObjectList::errorNorms() const {
     std::vector<ErrorNorm> all;
     for (const auto& object : objects_)
         for (auto& norm : object->errorNorms()) all.push_back(norm);
+    return all;
+}
+
+std::vector<FunctionObjectList::ErrorRecord> FunctionObjectList::errorRecords() const {
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    std::vector<ErrorRecord> all;
+    for (const auto& object : objects_) {
+        const FunctionObject::WriteStamp& stamp = object->lastWrite();
+        for (const auto& n : object->errorNorms()) {
+            // The norm's own time; the stamp is of the same write unless the object kept an older norm.
+            FunctionObject::WriteStamp at = stamp;
+            if (!(n.time == stamp.time)) at = {-1, n.time, nan};
+            const std::string base = n.source + "/" + n.field + "/";
+            for (const auto& [norm, value, exact] :
+                 {std::tuple{"L1", n.L1, n.exactL1}, {"L2", n.L2, n.exactL2}, {"Linf", n.Linf, n.exactLinf}})
+                all.push_back({base + norm, value, exact, exact > 0 ? value / exact : nan, true, at});
+        }
+        for (const auto& r : object->referenceValues())
+            all.push_back({object->name() + "/" + r.name, r.value, r.exact,
+                           r.exact != 0 ? (r.value - r.exact) / std::abs(r.exact) : nan, false, stamp});
+    }
     return all;
 }
 

@@ -6,7 +6,8 @@
 //                   (as riemannError);
 //   plateaus.csv    per uniform state of the exact profile, the medians of ρ, v, P over the
 //                   particles in its middle (20% of its width left out at each end, where SPH
-//                   smears the waves) beside the exact values. Before the impact's shock reaches
+//                   smears the waves) beside the exact values (in the summary's error lines as
+//                   <plateau>Density, <plateau>Velocity, <plateau>Pressure). Before the impact's shock reaches
 //                   the interface at b (t1 = 0.15616) there is one plateau, `impact`; after it three:
 //                   `impact` (ρ*, v*, P* of the first impact, left of the reflected fan),
 //                   `reflected` (material 1 behind the reflected fan) and `transmitted` (material 2
@@ -138,7 +139,9 @@ void IsothermalShockBarError::write() {
             return name == "density" ? s.density : name == "velocity" ? s.velocity : s.pressure;
         };
         const ErrorNorms e = ErrorNorms::compute(x, values, w, exact, from_, to_);
-        norms_.add(time, name, e.l1, e.l2, e.linf);
+        // The same norms of the exact profile (the error of a field of zeros): the relative error's scale.
+        const ErrorNorms scale = ErrorNorms::compute(x, std::vector<double>(n, 0.0), w, exact, from_, to_);
+        norms_.add(time, name, e.l1, e.l2, e.linf, scale.l1, scale.l2, scale.linf);
     }
 
     // The exact waves at t (bars 1|2 meet at a = 0.6, 2|3 at b = 0.8).
@@ -178,6 +181,7 @@ void IsothermalShockBarError::write() {
 
     char line[300];
     summary_.clear();
+    references_.clear();
     // Relative errors where the exact value is not 0; against an exact 0 (a plateau at rest) the
     // absolute error is reported instead. An empty plateau is said so, not folded in as NaN.
     double worstPlateau = 0, worstAtRest = -1;
@@ -197,6 +201,10 @@ void IsothermalShockBarError::write() {
             continue;
         }
         ++measured;
+        const std::string plateau = q.name;
+        references_.push_back({plateau + "Density", r, q.rho});
+        references_.push_back({plateau + "Velocity", u, q.v});
+        references_.push_back({plateau + "Pressure", pr, q.p});
         for (const auto& [value, exact] : {std::pair{r, q.rho}, std::pair{u, q.v}, std::pair{pr, q.p}}) {
             if (exact != 0)
                 worstPlateau = std::max(worstPlateau, std::abs(value - exact) / std::abs(exact));

@@ -13,6 +13,7 @@ public:
     void write() override;
     std::vector<ErrorNorm> errorNorms() const override { return norms_.latest(); }
     std::vector<std::string> summary() const override { return summary_; }
+    std::vector<ReferenceValue> referenceValues() const override { return references_; }
 
 private:
     IsothermalShockBarError(const KeywordValues& values, const std::string& name, const RunContext& context);
@@ -24,6 +25,7 @@ private:
     ErrorNormWriter norms_;
     std::unique_ptr<CsvFile> plateaus_, fronts_, contact_;
     std::vector<std::string> summary_;
+    std::vector<ReferenceValue> references_;  // the plateau medians of the latest write
 };
 
 }  // namespace mfdyn

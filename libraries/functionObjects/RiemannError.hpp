@@ -13,6 +13,8 @@ public:
     void write() override;
     std::vector<ErrorNorm> errorNorms() const override { return norms_.latest(); }
     std::vector<std::string> summary() const override { return summary_; }
+    // starPressure, starVelocity: the plateau medians against the exact star state.
+    std::vector<ReferenceValue> referenceValues() const override { return references_; }
 
 private:
     RiemannError(const KeywordValues& values, const std::string& name, const RunContext& context);
@@ -23,6 +25,7 @@ private:
     ErrorNormWriter norms_;
     std::unique_ptr<CsvFile> star_;
     std::vector<std::string> summary_;
+    std::vector<ReferenceValue> references_;
 };
 
 }  // namespace mfdyn

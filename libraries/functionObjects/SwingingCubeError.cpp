@@ -10,6 +10,7 @@
 //
 //     L2 = sqrt(sum_q w_q |e_q|^2),  L1 = sum_q w_q |e_q|,  Linf = max_q |e_q|,
 //
+// (and the same norms of the exact p and P, the scale of the relative error in the summary)
 // over quadrature points q in the REFERENCE configuration (the paper's "L2 error on a fine
 // background cloud of quadrature points"):
 //   - default: the cell centres of a regular grid of `cloud`^Dim cells on [0, 1]^Dim, w = 1/cloud^Dim,
@@ -165,14 +166,20 @@ std::vector<std::pair<std::string, SwingingCubeError::Norms>> SwingingCubeError:
     const FieldBase& velocity = fields.field("velocity");
     const FieldBase& stress = fields.field("firstPiolaStress");
 
-    Accumulator momentumError, stressError;
-    std::vector<Accumulator> componentError(Dim * Dim);
+    Accumulator momentumError, stressError, momentumExact, stressExact;
+    std::vector<Accumulator> componentError(Dim * Dim), componentExact(Dim * Dim);
     auto add = [&](double w, const Vector<Dim>& X, const Vector<Dim>& v, const Tensor<Dim>& P) {
-        momentumError.add(w, (rho0_ * v - exact.momentum(X, t)).norm());
-        const Tensor<Dim> e = P - exact.firstPiolaStress(X, t);
+        const Vector<Dim> pExact = exact.momentum(X, t);
+        const Tensor<Dim> PExact = exact.firstPiolaStress(X, t);
+        momentumError.add(w, (rho0_ * v - pExact).norm());
+        momentumExact.add(w, pExact.norm());
+        const Tensor<Dim> e = P - PExact;
         stressError.add(w, e.norm());
-        for (int c = 0; c < Dim * Dim; ++c)
+        stressExact.add(w, PExact.norm());
+        for (int c = 0; c < Dim * Dim; ++c) {
             componentError[std::size_t(c)].add(w, std::abs(e(c % Dim, c / Dim)));
+            componentExact[std::size_t(c)].add(w, std::abs(PExact(c % Dim, c / Dim)));
+        }
     };
 
     if (volumeWeighted_) {
@@ -194,13 +201,15 @@ std::vector<std::pair<std::string, SwingingCubeError::Norms>> SwingingCubeError:
         }
     }
 
-    auto finish = [](const Accumulator& a) { return Norms{a.l1, std::sqrt(a.l2), a.linf}; };
-    std::vector<std::pair<std::string, Norms>> out{{"momentum", finish(momentumError)},
-                                                   {"firstPiolaStress", finish(stressError)}};
+    auto finish = [](const Accumulator& a, const Accumulator& x) {
+        return Norms{a.l1, std::sqrt(a.l2), a.linf, x.l1, std::sqrt(x.l2), x.linf};
+    };
+    std::vector<std::pair<std::string, Norms>> out{{"momentum", finish(momentumError, momentumExact)},
+                                                   {"firstPiolaStress", finish(stressError, stressExact)}};
     if (components_)
         for (int c = 0; c < Dim * Dim; ++c)
             out.emplace_back(std::string("firstPiolaStress_") + axisNames[c % Dim] + axisNames[c / Dim],
-                             finish(componentError[std::size_t(c)]));
+                             finish(componentError[std::size_t(c)], componentExact[std::size_t(c)]));
     return out;
 }
 
@@ -211,7 +220,8 @@ std::vector<std::pair<std::string, SwingingCubeError::Norms>> SwingingCubeError:
 void SwingingCubeError::write() {
     const double time = context().time().value();
     const auto norms = compute();
-    for (const auto& [field, n] : norms) norms_.add(time, field, n.L1, n.L2, n.Linf);
+    for (const auto& [field, n] : norms)
+        norms_.add(time, field, n.L1, n.L2, n.Linf, n.exactL1, n.exactL2, n.exactLinf);
     char line[200];
     std::snprintf(
         line, sizeof line, "swinging cube at t = %.6g: L2 error of momentum %.4g, of P %.4g (%s)", time,

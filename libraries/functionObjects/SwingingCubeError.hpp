@@ -22,6 +22,8 @@ public:
     // One field's absolute norms at the current time, as written.
     struct Norms {
         double L1 = 0, L2 = 0, Linf = 0;
+        // The same norms of the exact field at this time: the scale of the relative error.
+        double exactL1 = 0, exactL2 = 0, exactLinf = 0;
     };
     // momentum, firstPiolaStress (and the components when asked), computed now without writing.
     std::vector<std::pair<std::string, Norms>> compute() const;

@@ -45,6 +45,34 @@ std::string progressLine(const Time& time, double elapsed, double startTime) {
     return s;
 }
 
+// Every error against a reference in one fixed form, one per line, for people and for mfStudy:
+//     error <name>  <value> (exact <x>, relative <r>) at CPU <s> s, step <n>, t = <t>
+// <name> is <object>/<field>/<L1|L2|Linf> (value: the norm of the error, exact: the same norm
+// of the exact field, relative = value/exact) or <object>/<quantity> (relative =
+// (value - exact)/|exact|); "n/a" where there is no exact norm or it is zero. The CPU time, step
+// and time are those of the write that measured it; the heading gives the process CPU time at
+// the end of the run (the error reached and what it cost).
+std::string errorLines(const std::vector<FunctionObjectList::ErrorRecord>& records) {
+    if (records.empty()) return "";
+    const auto text = [](double v, const char* format) {
+        if (!std::isfinite(v)) return std::string("n/a");
+        char s[40];
+        std::snprintf(s, sizeof s, format, v);
+        return std::string(s);
+    };
+    std::ostringstream s;
+    s << "Errors against the reference (process CPU time at the end of the run "
+      << text(processCpuSeconds(), "%.6g") << " s):";
+    for (const auto& r : records) {
+        s << "\n    error " << r.name << "  " << text(r.value, "%.10g") << " (exact "
+          << text(r.exact, "%.10g") << ", relative " << text(r.relative, "%.6g") << ") at CPU "
+          << text(r.measured.cpuSeconds, "%.6g") << " s, step "
+          << (r.measured.step >= 0 ? std::to_string(r.measured.step) : std::string("n/a"))
+          << ", t = " << text(r.measured.time, "%.10g");
+    }
+    return s.str();
+}
+
 }  // namespace
 
 SolverRun::SolverRun(const Arguments& args, std::string application)
@@ -346,6 +374,7 @@ int SolverRun::run(Solver& solver) {
         }
         Log::info(t.str());
     }
+    if (const std::string errors = errorLines(functions.errorRecords()); !errors.empty()) Log::info(errors);
     CsvFile csv(case_.postProcessing() / "runSummary" / startTimeName_ / "runSummary.csv",
                 {"time", "field", "L1", "L2", "Linf", "wallTime", "steps", "particles", "threads",
                  "particleStepsPerSecond"},

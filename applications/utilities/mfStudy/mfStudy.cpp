@@ -445,11 +445,11 @@ bool isTimeName(const std::string& name) {
     return end && *end == '\0';
 }
 
-// The case's inputs, without its results, the study itself, or initial conditions that
-// particleGen writes again.
-void copyInputs(const fs::path& root, const fs::path& to) {
+// The case's inputs: its top-level entries without its results, the study itself, or initial
+// conditions that particleGen writes again.
+std::vector<fs::path> caseInputs(const fs::path& root) {
     const bool generated = fs::exists(root / "system" / "particleGenDict");
-    fs::create_directories(to);
+    std::vector<fs::path> inputs;
     for (const auto& e : fs::directory_iterator(root)) {
         const std::string name = e.path().filename().string();
         if (name == "study" || name == "postProcessing" || name == "particles.pvd" ||
@@ -457,8 +457,55 @@ void copyInputs(const fs::path& root, const fs::path& to) {
             name.find(".tmp") != std::string::npos || e.path().extension() == ".png" ||
             (isTimeName(name) && (name != "0" || generated)) || name.rfind(".mfdyn", 0) == 0)
             continue;
-        fs::copy(e.path(), to / name, fs::copy_options::recursive | fs::copy_options::copy_symlinks);
+        inputs.push_back(e.path());
     }
+    std::sort(inputs.begin(), inputs.end());
+    return inputs;
+}
+
+void copyInputs(const fs::path& root, const fs::path& to) {
+    fs::create_directories(to);
+    for (const auto& input : caseInputs(root))
+        fs::copy(input, to / input.filename(), fs::copy_options::recursive | fs::copy_options::copy_symlinks);
+}
+
+// A fingerprint of every file the variants copy (FNV-1a over each one's path in the case and its
+// bytes, in path order), studyDict left out: its entries are compared one by one (settingsFile),
+// and a level added to it must not rerun the others. A finished variant whose marker holds
+// another fingerprint was run from another case: a changed endTime, material or mesh.
+std::string inputsFingerprint(const fs::path& root) {
+    std::uint64_t hash = 1469598103934665603ull;
+    const auto mix = [&](const char* data, std::size_t n) {
+        for (std::size_t i = 0; i < n; ++i) {
+            hash ^= static_cast<unsigned char>(data[i]);
+            hash *= 1099511628211ull;
+        }
+    };
+    std::vector<fs::path> files;
+    for (const auto& input : caseInputs(root)) {
+        std::error_code ec;
+        if (fs::is_directory(input, ec)) {
+            for (auto it = fs::recursive_directory_iterator(input, ec); !ec && it != fs::end(it);
+                 it.increment(ec))
+                if (it->is_regular_file(ec)) files.push_back(it->path());
+        } else {
+            files.push_back(input);
+        }
+    }
+    std::sort(files.begin(), files.end());
+    const fs::path studyDict = root / "system" / "studyDict";
+    for (const auto& file : files) {
+        if (file == studyDict) continue;
+        const std::string name = file.lexically_relative(root).generic_string();
+        mix(name.c_str(), name.size() + 1);
+        std::ifstream in(file, std::ios::binary);
+        char buffer[65536];
+        while (in.read(buffer, sizeof buffer) || in.gcount() > 0) mix(buffer, std::size_t(in.gcount()));
+        mix("", 1);
+    }
+    char text[20];
+    std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(hash));
+    return text;
 }
 
 // A toolkit program run to completion with its output discarded (no shell: values need no quoting).
@@ -571,13 +618,18 @@ pid_t launch(const fs::path& dir, const Study& study, const fs::path& binDir, in
     _exit(127);
 }
 
-std::map<std::string, double> readMarker(const fs::path& file) {
-    std::map<std::string, double> values;
+// The done marker: "key value" lines (cpuSeconds, wallSeconds, maxRssBytes, baseInputs).
+std::map<std::string, std::string> readMarker(const fs::path& file) {
+    std::map<std::string, std::string> values;
     std::ifstream in(file);
-    std::string key;
-    double value = 0;
+    std::string key, value;
     while (in >> key >> value) values[key] = value;
     return values;
+}
+
+double markerNumber(const std::map<std::string, std::string>& marker, const std::string& key) {
+    const auto it = marker.find(key);
+    return it == marker.end() ? 0.0 : std::strtod(it->second.c_str(), nullptr);
 }
 
 // Runs the variants without a done marker, `jobs` at a time. Returns 0, or 128 + the signal
@@ -595,21 +647,29 @@ int runVariants(const fs::path& studyDir, const Study& study, std::vector<Outcom
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
 
+    const std::string fingerprint = inputsFingerprint(studyDir.parent_path());
     std::vector<std::size_t> pending;
     for (std::size_t i = 0; i < study.variants.size(); ++i) {
         const fs::path dir = studyDir / study.variants[i].name;
         // A finished variant whose entries studyDict has since changed is stale: it runs again.
         const bool same =
             fs::exists(dir / settingsFile) && readText(dir / settingsFile) == settingsText(study.variants[i]);
-        if (fs::exists(dir / doneMarker) && !same)
+        const bool done = fs::exists(dir / doneMarker);
+        const auto m = done ? readMarker(dir / doneMarker) : std::map<std::string, std::string>{};
+        // So is one run from other inputs of the base case (a marker without a fingerprint too:
+        // nothing says what it was run from).
+        const bool sameInputs = m.count("baseInputs") && m.at("baseInputs") == fingerprint;
+        if (done && !same)
             std::cout << "    " << study.variants[i].name
                       << ": its entries changed in studyDict since it ran: rerun\n";
-        if (fs::exists(dir / doneMarker) && same) {
-            const auto m = readMarker(dir / doneMarker);
+        else if (done && !sameInputs)
+            std::cout << "    " << study.variants[i].name
+                      << ": the base case's inputs (files the variants copy) changed since it ran: rerun\n";
+        if (done && same && sameInputs) {
             outcomes[i].finished = true;
-            outcomes[i].cpuSeconds = m.count("cpuSeconds") ? m.at("cpuSeconds") : 0;
-            outcomes[i].wallSeconds = m.count("wallSeconds") ? m.at("wallSeconds") : 0;
-            outcomes[i].maxRssBytes = m.count("maxRssBytes") ? m.at("maxRssBytes") : 0;
+            outcomes[i].cpuSeconds = markerNumber(m, "cpuSeconds");
+            outcomes[i].wallSeconds = markerNumber(m, "wallSeconds");
+            outcomes[i].maxRssBytes = markerNumber(m, "maxRssBytes");
             std::cout << "    " << study.variants[i].name << ": finished before, not rerun\n";
         } else {
             pending.push_back(i);
@@ -663,7 +723,7 @@ int runVariants(const fs::path& studyDir, const Study& study, std::vector<Outcom
         if (ok && !stopSignal) {
             std::ostringstream marker;
             marker << "cpuSeconds " << number(o.cpuSeconds) << "\nwallSeconds " << number(o.wallSeconds)
-                   << "\nmaxRssBytes " << number(o.maxRssBytes) << "\n";
+                   << "\nmaxRssBytes " << number(o.maxRssBytes) << "\nbaseInputs " << fingerprint << "\n";
             writeAtomically(dir / doneMarker, marker.str());
             o.finished = true;
             std::cout << "    " << v.name << ": finished (" << number(o.cpuSeconds) << " s CPU)" << std::endl;
@@ -696,7 +756,8 @@ struct Reference {
 
 struct Result {
     std::map<std::string, double> norms;          // "riemann/density/L1"
-    std::map<std::string, Reference> references;  // "riemann/star pressure"
+    std::map<std::string, double> exactNorms;     // the same norms of the exact field (relative error)
+    std::map<std::string, Reference> references;  // "riemann/starPressure"
     double wallSeconds = NAN, steps = NAN, particles = NAN, peakMemoryBytes = NAN;
 };
 
@@ -721,8 +782,11 @@ double toNumber(const std::string& text) {
 }
 
 // A run's results: its runSummary.csv (the summary's error norms at full precision, wall time,
-// steps, particles) and its log (peak memory and the Diagnostics lines that compare a value with
-// its exact one, "name value (exact reference, ...)").
+// steps, particles) and its log: peak memory, and the summary's error lines (SolverRun),
+//     error <object>/<field>/<L1|L2|Linf>  <norm> (exact <norm of the exact field>, relative ..) ...
+//     error <object>/<quantity>  <value> (exact <x>, relative <r>) at CPU <s> s, step <n>, t = <t>
+// A log without them (a solver built before they were printed) gives its values through the
+// Diagnostics lines that compare one with its exact one, "name value (exact reference, ...)".
 Result collect(const fs::path& dir, const std::string& application, std::vector<std::string>& normOrder,
                std::vector<std::string>& referenceOrder) {
     Result r;
@@ -762,7 +826,11 @@ Result collect(const fs::path& dir, const std::string& application, std::vector<
     }
     std::ifstream log(dir / ("log." + application));
     std::string line;
-    bool diagnostics = false;
+    bool diagnostics = false, errorLines = false;
+    std::map<std::string, Reference> fromDiagnostics;
+    std::vector<std::string> diagnosticsOrder;
+    static const std::regex errorLine(
+        R"(^    error (\S+)  (\S+) \(exact (\S+), relative (\S+)\) at CPU (\S+) s, step (\S+), t = (\S+)$)");
     static const std::regex compared(
         R"((?:^|[,:;]\s*)([A-Za-z][A-Za-z ]*?)\s*=?\s+(-?[0-9][0-9.]*(?:[eE][-+]?[0-9]+)?)\s*[A-Za-z]*\s*\(exact\s+(-?[0-9][0-9.]*(?:[eE][-+]?[0-9]+)?))");
     while (std::getline(log, line)) {
@@ -774,6 +842,22 @@ Result collect(const fs::path& dir, const std::string& application, std::vector<
             const std::map<std::string, double> scale{
                 {"B", 1}, {"KiB", 1024}, {"MiB", 1048576}, {"GiB", 1073741824.0}};
             if (scale.count(unit)) r.peakMemoryBytes = v * scale.at(unit);
+        }
+        if (std::smatch m; line.rfind("    error ", 0) == 0 && std::regex_match(line, m, errorLine)) {
+            errorLines = true;
+            const std::string key = m[1].str();
+            const auto parts = splitPath(key);
+            const bool norm =
+                parts.size() == 3 && (parts[2] == "L1" || parts[2] == "L2" || parts[2] == "Linf");
+            if (norm) {
+                r.exactNorms[key] = toNumber(m[3].str());
+                // The CSV's norm at full precision is kept; a log line fills in one it lacks.
+                if (!r.norms.count(key)) r.norms[key] = toNumber(m[2].str()), noteOrder(normOrder, key);
+            } else {
+                r.references[key] = {toNumber(m[2].str()), toNumber(m[3].str())};
+                noteOrder(referenceOrder, key);
+            }
+            continue;
         }
         if (line.rfind("Diagnostics:", 0) == 0) {
             diagnostics = true;
@@ -787,10 +871,17 @@ Result collect(const fs::path& dir, const std::string& application, std::vector<
         const std::string text = line.substr(colon + 2);
         for (std::sregex_iterator m(text.begin(), text.end(), compared), end; m != end; ++m) {
             const std::string key = source + "/" + (*m)[1].str();
-            r.references[key] = {toNumber((*m)[2].str()), toNumber((*m)[3].str())};
-            noteOrder(referenceOrder, key);
+            fromDiagnostics[key] = {toNumber((*m)[2].str()), toNumber((*m)[3].str())};
+            diagnosticsOrder.push_back(key);
         }
     }
+    // The Diagnostics' "(exact ...)" values only where the log has no error lines: they would
+    // repeat the same values under other names ("star pressure" beside "starPressure").
+    if (!errorLines)
+        for (const auto& key : diagnosticsOrder) {
+            r.references[key] = fromDiagnostics.at(key);
+            noteOrder(referenceOrder, key);
+        }
     return r;
 }
 
@@ -799,6 +890,20 @@ double measureOf(const Result& r, const std::string& measure) {
     if (auto q = r.references.find(measure); q != r.references.end())
         return q->second.exact != 0 ? std::abs(q->second.value - q->second.exact) / std::abs(q->second.exact)
                                     : std::abs(q->second.value);
+    return NAN;
+}
+
+// The measure relative to the size of the solution, what the targets 10%, 1%, 0.1% are on: a
+// norm over the same norm of the exact field (NaN where the run did not give it), a value's
+// |value - exact|/|exact|.
+double relativeOf(const Result& r, const std::string& measure) {
+    if (auto n = r.norms.find(measure); n != r.norms.end()) {
+        const auto e = r.exactNorms.find(measure);
+        return e != r.exactNorms.end() && e->second > 0 ? n->second / e->second : NAN;
+    }
+    if (auto q = r.references.find(measure); q != r.references.end())
+        return q->second.exact != 0 ? std::abs(q->second.value - q->second.exact) / std::abs(q->second.exact)
+                                    : NAN;
     return NAN;
 }
 
@@ -830,7 +935,14 @@ struct SchemeLine {
     std::vector<std::optional<double>> cpuToTarget;
 };
 
+// Relative errors (relativeOf) at which each scheme's CPU time is reported.
 const std::vector<double> targets{1e-1, 1e-2, 1e-3};
+
+std::string targetName(double target) {
+    char s[16];
+    std::snprintf(s, sizeof s, "%g%%", 100 * target);
+    return s;
+}
 
 std::string gnuplotText(const std::string& text) {
     std::string s;
@@ -936,12 +1048,13 @@ void report(const fs::path& studyDir, const Study& study, const std::vector<Outc
     }
 
     const std::size_t n = study.variants.size();
-    std::vector<double> h(n, NAN), cpu(n, NAN), error(n, NAN);
+    std::vector<double> h(n, NAN), cpu(n, NAN), error(n, NAN), relative(n, NAN);
     for (std::size_t i = 0; i < n; ++i) {
         if (study.variants[i].spacing) h[i] = *study.variants[i].spacing;
         if (!outcomes[i].finished) continue;
         cpu[i] = outcomes[i].cpuSeconds;
         error[i] = measureOf(results[i], measure);
+        relative[i] = relativeOf(results[i], measure);
     }
     const auto front = study::paretoFront(cpu, error);
 
@@ -970,16 +1083,20 @@ void report(const fs::path& studyDir, const Study& study, const std::vector<Outc
         std::vector<std::size_t> byCost(line.runs);
         std::sort(byCost.begin(), byCost.end(),
                   [&](std::size_t a, std::size_t b) { return cpu[a] < cpu[b]; });
+        // The targets are on the relative error: an absolute norm's 1e-2 means nothing apart from its units.
         std::vector<double> sc, se;
-        for (std::size_t i : byCost) sc.push_back(cpu[i]), se.push_back(error[i]);
+        for (std::size_t i : byCost) sc.push_back(cpu[i]), se.push_back(relative[i]);
         for (double t : targets) line.cpuToTarget.push_back(study::costToReach(sc, se, t));
     }
 
     // results.csv: one row per variant, failures included with their diagnosis.
     std::ostringstream csv;
-    csv << "variant,scheme,h,status,cpuSeconds,wallSeconds,steps,particles,peakMemoryMiB,measure,error";
+    csv << "variant,scheme,h,status,cpuSeconds,wallSeconds,steps,particles,peakMemoryMiB,measure,error,"
+           "relativeError";
     for (const auto& k : normOrder) csv << "," << k;
     for (const auto& k : referenceOrder) csv << "," << k << "," << k << "/exact";
+    // The scheme's CPU time to each target, on each of its rows (the figure codes are compared by).
+    for (double t : targets) csv << ",schemeCpuSecondsTo" << targetName(t);
     csv << ",pareto,diagnosis\n";
     const auto status = [&](std::size_t i) {
         return outcomes[i].finished            ? std::string("finished")
@@ -997,11 +1114,17 @@ void report(const fs::path& studyDir, const Study& study, const std::vector<Outc
             << (std::isfinite(r.steps) ? number(r.steps) : "") << ","
             << (std::isfinite(r.particles) ? number(r.particles) : "") << ","
             << (outcomes[i].finished && memory > 0 ? number(memory / 1048576.0) : "") << "," << measure << ","
-            << (std::isfinite(error[i]) ? number(error[i]) : "");
+            << (std::isfinite(error[i]) ? number(error[i]) : "") << ","
+            << (std::isfinite(relative[i]) ? number(relative[i]) : "");
         for (const auto& k : normOrder) csv << "," << (r.norms.count(k) ? number(r.norms.at(k)) : "");
         for (const auto& k : referenceOrder)
             csv << "," << (r.references.count(k) ? number(r.references.at(k).value) : "") << ","
                 << (r.references.count(k) ? number(r.references.at(k).exact) : "");
+        const auto line = std::find_if(lines.begin(), lines.end(), [&](const SchemeLine& l) {
+            return l.scheme == study.variants[i].scheme;
+        });
+        for (std::size_t k = 0; k < targets.size(); ++k)
+            csv << "," << (line != lines.end() && line->cpuToTarget[k] ? number(*line->cpuToTarget[k]) : "");
         csv << "," << (onFront ? "yes" : "no") << "," << csvQuoted(outcomes[i].diagnosis) << "\n";
     }
     writeAtomically(studyDir / "results.csv", csv.str());
@@ -1010,7 +1133,11 @@ void report(const fs::path& studyDir, const Study& study, const std::vector<Outc
     std::ostringstream md;
     md << "# Study of " << studyDir.parent_path().filename().string() << "\n\nMeasure: `" << measure
        << "`. CPU time: user + system of the variant's whole run (particleGen and " << study.application
-       << "). Pareto: no other run is both cheaper and more accurate.\n\n"
+       << "). Pareto: no other run is both cheaper and more accurate. Relative error: the measure "
+          "over the same norm of the exact field (a value: |value - exact|/|exact|), from the run's "
+          "summary. CPU s to 10%, 1%, 0.1%: the CPU time at which the scheme's line of runs, in order "
+          "of cost, first reaches that relative error, interpolated in log-log between the two runs "
+          "either side (empty: no run reached it).\n\n"
        << "| variant | h | status | CPU s | wall s | steps | particles | peak MiB | " << measure
        << " | Pareto | diagnosis |\n"
        << "|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -1026,15 +1153,17 @@ void report(const fs::path& studyDir, const Study& study, const std::vector<Outc
            << markdownCell(outcomes[i].diagnosis) << " |\n";
     }
     md << "\n| scheme | runs | order in h (fit) | order in CPU (fit) | Richardson order | extrapolated "
-       << measure
-       << " | CPU s to 1e-1 | CPU s to 1e-2 | CPU s to 1e-3 |\n|---|---|---|---|---|---|---|---|---|\n";
+       << measure << " | finest relative error";
+    for (double t : targets) md << " | CPU s to " << targetName(t);
+    md << " |\n|---|---|---|---|---|---|---|---|---|---|\n";
     std::cout << "\n";
     for (const auto& line : lines) {
         md << "| " << line.scheme << " | " << line.runs.size() << " | "
            << (line.orderH ? shortNumber(*line.orderH) : "") << " | "
            << (line.orderCpu ? shortNumber(-*line.orderCpu) : "") << " | "
            << (line.extrapolation ? shortNumber(line.extrapolation->order) : "") << " | "
-           << (line.extrapolation ? shortNumber(line.extrapolation->extrapolated) : "");
+           << (line.extrapolation ? shortNumber(line.extrapolation->extrapolated) : "") << " | "
+           << (line.runs.empty() ? "" : shortNumber(relative[line.runs.back()]));
         for (const auto& c : line.cpuToTarget) md << " | " << (c ? shortNumber(*c) : "");
         md << " |\n";
         std::cout << "scheme " << line.scheme << ": " << line.runs.size() << " runs";
@@ -1043,6 +1172,10 @@ void report(const fs::path& studyDir, const Study& study, const std::vector<Outc
         if (line.extrapolation)
             std::cout << ", Richardson order " << shortNumber(line.extrapolation->order) << " extrapolated "
                       << shortNumber(line.extrapolation->extrapolated);
+        for (std::size_t k = 0; k < targets.size(); ++k)
+            if (line.cpuToTarget[k])
+                std::cout << ", " << targetName(targets[k]) << " at " << shortNumber(*line.cpuToTarget[k])
+                          << " s CPU";
         std::cout << "\n";
     }
     // Every value the runs compare with an exact one, extrapolated where three levels allow.
@@ -1110,11 +1243,15 @@ int main(int argc, char** argv) {
         "        }\n"
         "    }\n"
         "Variants are the product variants x axes x resolution. A finished variant (study/<v>/mfStudy.done,\n"
-        "written after a successful run) is not rerun unless studyDict has changed its entries; one that\n"
+        "written after a successful run) is not rerun unless studyDict has changed its entries or a file\n"
+        "of the base case that the variants copy has changed (the marker holds their fingerprint;\n"
+        "studyDict itself is left out of it); one that\n"
         "failed or was stopped runs again from the case; one study of a case runs at a time. A failed\n"
         "variant is a row with the first error line of its logs. studyDict is checked against the case\n"
         "before anything runs: a path that is not in the case, an empty list or a value of the wrong form\n"
-        "is an error with its file and line, exit status 1. Without gnuplot the plots are skipped.",
+        "is an error with its file and line, exit status 1. Without gnuplot the plots are skipped.\n"
+        "Each scheme's CPU time to a relative error of 10%, 1% and 0.1% (the summary's error lines give\n"
+        "the exact norms) is interpolated on its line of runs, in results.md and results.csv.",
         {{"jobs", "N", "variants run side by side (default: studyDict's jobs, else 1)"},
          {"list", "", "print the variants and the entries each sets, then stop (nothing is written)"}},
         {},
