@@ -65,6 +65,57 @@ bool startsDict(const std::string& value) {
     return b != std::string::npos && value[b] == '{';
 }
 
+// The entry of `scope` that `path[depth..]` starts with, as (entry, components used). A key may
+// itself contain '/' (a studyDict's `system/controlDict/deltaT 0.04;`): the longest run of
+// components that names a key wins, so that `resolution/scale/system/controlDict/deltaT` reaches
+// it instead of looking for a dictionary `system` in `scale`.
+std::pair<const Entry*, std::size_t> lookUp(const Dictionary& scope, const std::vector<std::string>& path,
+                                            std::size_t depth) {
+    for (std::size_t n = path.size() - depth; n >= 1; --n) {
+        std::string key = path[depth];
+        for (std::size_t k = 1; k < n; ++k) key += "/" + path[depth + k];
+        if (const Entry* e = scope.peek(key)) return {e, n};
+    }
+    return {nullptr, 0};
+}
+
+// When `path[depth]` names nothing in `scope` but keys there contain '/' and begin with it, the
+// entry asked for is one of them spelt otherwise (or a new one): adding nested dictionaries
+// `path[depth] { ... }` beside them would be a silent mistake. An InputError listing them.
+void refuseNestedBesideSlashKeys(const Dictionary& scope, const std::vector<std::string>& path,
+                                 std::size_t depth, const std::string& scoped) {
+    std::string similar;
+    for (const auto& key : scope.keys())
+        if (key.rfind(path[depth] + "/", 0) == 0) similar += (similar.empty() ? "" : " | ") + key;
+    if (similar.empty() || depth + 1 == path.size()) return;
+    throw InputError(
+        scope.where(), scope.scope(),
+        "no entry '" + scoped +
+            "': " + (scope.scope().empty() ? std::string("the top level") : "'" + scope.scope() + "'") +
+            " has no '" + path[depth] + "', and its keys that contain '/' and begin with it are: " + similar +
+            " (name one of them whole after the dictionaries that hold it; a new "
+            "nested dictionary '" +
+            path[depth] + "' is not made beside them)");
+}
+
+// The entry `scoped` names, keys containing '/' included (lookUp); null when there is none.
+const Entry* findEntry(const Dictionary& dict, const std::string& scoped) {
+    const auto path = splitPath(scoped);
+    const Dictionary* scope = &dict;
+    for (std::size_t depth = 0; depth < path.size();) {
+        const auto [e, used] = lookUp(*scope, path, depth);
+        if (!e) {
+            refuseNestedBesideSlashKeys(*scope, path, depth, scoped);
+            return nullptr;
+        }
+        depth += used;
+        if (depth == path.size()) return e;
+        if (!e->isDict()) return nullptr;
+        scope = e->dict.get();
+    }
+    return nullptr;
+}
+
 // The text of `path[from..]` set to `value`, nested in new sub-dictionaries, indented for `depth`.
 std::string newEntriesText(const std::vector<std::string>& path, std::size_t from, const std::string& value) {
     std::string text;
@@ -83,11 +134,16 @@ std::string edit(const std::string& text, const std::string& fileName, const std
     const Dictionary* scope = &dict;
     std::size_t depth = 0;
     const Entry* found = nullptr;
-    for (; depth < path.size(); ++depth) {
-        const Entry* e = scope->peek(path[depth]);
-        if (!e) break;
-        if (depth + 1 == path.size()) {
+    std::vector<std::string> keys;  // the keys of the dictionaries passed through, one per level
+    while (depth < path.size()) {
+        const auto [e, used] = lookUp(*scope, path, depth);
+        if (!e) {
+            refuseNestedBesideSlashKeys(*scope, path, depth, scoped);
+            break;
+        }
+        if (depth + used == path.size()) {
             found = e;
+            keys.push_back(e->key);
             break;
         }
         if (!e->isDict())
@@ -95,6 +151,8 @@ std::string edit(const std::string& text, const std::string& fileName, const std
                 e->where, scope->scope(),
                 "'" + path[depth] + "' is not a dictionary, cannot set '" + scoped + "' inside it");
         scope = e->dict.get();
+        keys.push_back(e->key);
+        depth += used;
     }
 
     // An entry written in this file is replaced where it stands; one that came from an include
@@ -112,12 +170,18 @@ std::string edit(const std::string& text, const std::string& fileName, const std
         return text.substr(0, begin) + replacement + text.substr(end);
     }
 
-    if (found) depth = path.size() - 1;
+    // What to write: the found key (from an include, overridden here) or the rest of the path,
+    // each component a new nested dictionary, from the level reached.
+    std::size_t level = keys.size();
+    if (found)
+        level = keys.size() - 1;
+    else
+        keys.insert(keys.end(), path.begin() + long(depth), path.end());
     if (!scope->where().file || *scope->where().file != fileName || scope->closeBraceOffset > text.size())
         throw InputError(scope->where(), scope->scope(),
                          "cannot add '" + scoped + "': its dictionary is not written out in " + fileName);
     std::size_t at = scope->closeBraceOffset;
-    const std::string insertion = newEntriesText(path, depth, value);
+    const std::string insertion = newEntriesText(keys, level, value);
     if (at == text.size()) {  // top level: append at the end of the file
         std::string result = text;
         if (!result.empty() && result.back() != '\n') result += '\n';
@@ -152,7 +216,7 @@ int main(int argc, char** argv) {
             const std::string scoped = args.value("entry");
             const std::string edited = edit(text, fileName, scoped, *value);
             const Dictionary check = Dictionary::parse(edited, fileName);
-            if (!check.findScoped(scoped))
+            if (!findEntry(check, scoped))
                 throw Error("internal error: '" + scoped + "' missing after the edit");
             writeAtomically(file, edited);
             return 0;
@@ -162,7 +226,7 @@ int main(int argc, char** argv) {
         const Dictionary* scope = &dict;
         const Entry* entry = nullptr;
         if (auto scoped = args.find("entry")) {
-            entry = dict.findScoped(*scoped);
+            entry = findEntry(dict, *scoped);
             if (!entry) throw InputError(dict.where(), "", "no entry '" + *scoped + "'");
             scope = entry->dict.get();
         }

@@ -29,6 +29,10 @@ std::optional<double> logLogSlope(const std::vector<double>& x, const std::vecto
 
 std::optional<Richardson> richardson(double h1, double q1, double h2, double q2, double h3, double q3) {
     if (!(h1 > h2 && h2 > h3 && h3 > 0)) return std::nullopt;
+    // A missing value (NaN: a run that reported no such measure) carries no order: the sign
+    // tests below are all false for NaN, and the bisection then "found" p = 1e-6.
+    if (!std::isfinite(q1) || !std::isfinite(q2) || !std::isfinite(q3) || !std::isfinite(h1))
+        return std::nullopt;
     const double d12 = q1 - q2, d23 = q2 - q3;
     if (d12 == 0 || d23 == 0 || (d12 > 0) != (d23 > 0)) return std::nullopt;
     const double ratio = d12 / d23;

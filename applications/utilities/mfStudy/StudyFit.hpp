@@ -21,7 +21,7 @@ struct Richardson {
 // ratio r = h1/h2 = h2/h3, p = ln((q1 - q2)/(q2 - q3))/ln r; otherwise p solves
 // (q1 - q2)/(q2 - q3) = (h1^p - h2^p)/(h2^p - h3^p) by bisection on (0, 20].
 // Empty when the differences change sign (oscillating, not in the asymptotic range), when one is
-// zero, or when the levels are not distinct and decreasing.
+// zero, when the levels are not distinct and decreasing, or when a value is not finite.
 std::optional<Richardson> richardson(double h1, double q1, double h2, double q2, double h3, double q3);
 
 // Indices of the points on the lower-left Pareto front of (cost, error): none other is at most as

@@ -66,6 +66,9 @@ struct Study {
     std::string measure;  // "<functionObject>/<field>/<L1|L2|Linf>" or "<functionObject>/<quantity>"
     std::string application;
     std::vector<Variant> variants;
+    // quantities { name "shell command"; }: a value of each finished run that no summary prints
+    // (a twist angle from a probe's CSV), the last line the command writes in the variant's directory.
+    std::vector<std::pair<std::string, std::string>> quantities;
 };
 
 std::string tokensText(const Entry& e) {
@@ -112,8 +115,12 @@ std::vector<std::string> caseDictionaries(const fs::path& root) {
 // A studyDict entry path split into the case file it names and the scoped key inside it, checked:
 // the file exists, the key exists in it, and the new value has the form of the old (a number for
 // a number, a dictionary for a dictionary).
+//
+// `scaled` (a resolution's scale): a number may replace a list of numbers, every component set to
+// it (a nodal lattice's `points (9 9 9)`), rounded to a whole number where they all are whole.
 Setting resolveSetting(const fs::path& root, const std::string& path, const std::string& value,
-                       const Entry* valueEntry, const SourceLocation& where, const std::string& scope) {
+                       const Entry* valueEntry, const SourceLocation& where, const std::string& scope,
+                       bool scaled = false) {
     const auto parts = splitPath(path);
     std::size_t split = 0;
     fs::path file;
@@ -157,6 +164,34 @@ Setting resolveSetting(const fs::path& root, const std::string& path, const std:
         throw InputError(where, scope,
                          "'" + value + "' cannot replace " + path + ", which is " +
                              (found->isDict() ? "a dictionary { ... }" : "a value, not a dictionary"));
+    if (scaled && found->tokens.size() == 1 && found->tokens[0].kind == Token::Kind::list &&
+        !found->tokens[0].list.empty() &&
+        std::all_of(found->tokens[0].list.begin(), found->tokens[0].list.end(),
+                    [](const Token& t) { return t.isNumber(); })) {
+        const auto& old = found->tokens[0].list;
+        // The new components: one number for all, or a list of as many as the old has.
+        std::vector<double> values;
+        if (!value.empty() && value[0] == '(') {
+            const Dictionary probe = Dictionary::parse("value " + value + ";", "studyDict");
+            for (const Token& t : probe.entry("value").tokens[0].list) values.push_back(t.number());
+            if (values.size() != old.size())
+                throw InputError(where, scope,
+                                 "the scale of " + path + " gives " + std::to_string(values.size()) +
+                                     " components, and it has " + std::to_string(old.size()) + " (now " +
+                                     tokensText(*found) + ")");
+        } else {
+            values.assign(old.size(), std::strtod(value.c_str(), nullptr));
+        }
+        std::string list = "(";
+        for (std::size_t k = 0; k < old.size(); ++k) {
+            double v = values[k];
+            if (old[k].number() == std::floor(old[k].number())) v = std::round(v);  // a count stays one
+            char text[40];
+            std::snprintf(text, sizeof text, "%.10g", v);
+            list += (k ? " " : "") + std::string(text);
+        }
+        return {path, file, key, list + ")"};
+    }
     const bool oldIsNumber = found->tokens.size() == 1 && found->tokens[0].isNumber();
     if (oldIsNumber) {
         const Dictionary probe =
@@ -183,7 +218,8 @@ std::string number(double v) {
     return s;
 }
 
-const std::vector<std::string> studyKeywords{"run", "jobs", "error", "resolution", "axes", "variants"};
+const std::vector<std::string> studyKeywords{"run",  "jobs",     "error",     "resolution",
+                                             "axes", "variants", "quantities"};
 
 Study readStudy(const fs::path& root, std::optional<int> jobsOption) {
     const fs::path studyFile = root / "system" / "studyDict";
@@ -218,6 +254,21 @@ Study readStudy(const fs::path& root, std::optional<int> jobsOption) {
     if (jobsOption) study.jobs = *jobsOption;
     if (study.jobs < 1)
         throw dict.error("jobs", "jobs must be at least 1, not " + std::to_string(study.jobs));
+
+    if (const Entry* q = dict.findEntry("quantities")) {
+        if (!q->isDict() || q->dict->size() == 0)
+            throw InputError(q->where, "",
+                             "quantities must be a dictionary { <name> \"<shell command>\"; ... } naming at "
+                             "least one");
+        for (const auto& e : q->dict->entries()) {
+            if (e->isDict() || e->tokens.size() != 1 || e->tokens[0].kind != Token::Kind::string)
+                throw InputError(e->where, "quantities",
+                                 "quantity '" + e->key +
+                                     "' must be one quoted shell command, run in each finished variant's "
+                                     "directory, whose last line of output is the value");
+            study.quantities.emplace_back(e->key, e->tokens[0].text);
+        }
+    }
 
     study.measure = dict.getOrDefault<std::string>("error", "");
     if (!study.measure.empty()) {
@@ -320,10 +371,21 @@ Study readStudy(const fs::path& root, std::optional<int> jobsOption) {
         }
     }
 
+    struct Rule {
+        double factor = 1, power = 1, offset = 0;
+        double at(double h) const { return factor * std::pow(h, power) + offset; }
+    };
     struct Scaled {
         std::string path;
-        double factor = 1, power = 1;
+        Rule rule;
         const Entry* entry = nullptr;
+        std::vector<Rule> components;  // a list entry set component by component (else empty)
+        std::string at(double h) const {
+            if (components.empty()) return number(rule.at(h));
+            std::string list = "(";
+            for (const Rule& c : components) list += (list.size() > 1 ? " " : "") + number(c.at(h));
+            return list + ")";
+        }
     };
     std::vector<double> spacings;
     std::vector<Scaled> scaled;
@@ -344,23 +406,48 @@ Study readStudy(const fs::path& root, std::optional<int> jobsOption) {
         if (scale.size() == 0)
             throw rd.error("scale", "no entries follow the spacing: name at least one <entry path> factor;");
         for (const auto& e : scale.entries()) {
-            Scaled s{e->key, 1, 1, e.get()};
-            if (e->tokens.size() == 1 && e->tokens[0].isNumber()) {
-                s.factor = e->tokens[0].number();
-            } else if (e->tokens.size() == 1 && e->tokens[0].kind == Token::Kind::list &&
-                       e->tokens[0].list.size() == 2 && e->tokens[0].list[0].isNumber() &&
-                       e->tokens[0].list[1].isNumber()) {
-                s.factor = e->tokens[0].list[0].number();
-                s.power = e->tokens[0].list[1].number();
-            } else {
+            Scaled s{e->key, {}, e.get(), {}};
+            // factor | (factor power) | (factor power offset): one rule.
+            const auto ruleOf = [](const Token& t) -> std::optional<Rule> {
+                if (t.isNumber()) return Rule{t.number(), 1, 0};
+                if (t.kind != Token::Kind::list || t.list.size() < 2 || t.list.size() > 3 ||
+                    !std::all_of(t.list.begin(), t.list.end(), [](const Token& c) { return c.isNumber(); }))
+                    return std::nullopt;
+                return Rule{t.list[0].number(), t.list[1].number(),
+                            t.list.size() == 3 ? t.list[2].number() : 0};
+            };
+            const bool componentwise =
+                e->tokens.size() == 1 && e->tokens[0].kind == Token::Kind::list &&
+                std::any_of(e->tokens[0].list.begin(), e->tokens[0].list.end(),
+                            [](const Token& c) { return c.kind == Token::Kind::list; });
+            bool valid = e->tokens.size() == 1;
+            if (valid && componentwise) {
+                // ((10 -1 1) 3 3): each component its rule, a plain number a constant.
+                for (const Token& c : e->tokens[0].list) {
+                    const auto r = c.isNumber() ? std::optional<Rule>(Rule{0, 0, c.number()}) : ruleOf(c);
+                    if (r)
+                        s.components.push_back(*r);
+                    else
+                        valid = false;
+                }
+            } else if (valid) {
+                const auto r = ruleOf(e->tokens[0]);
+                if (r)
+                    s.rule = *r;
+                else
+                    valid = false;
+            }
+            if (!valid) {
                 throw InputError(e->where, "resolution/scale",
                                  "'" + tokensText(*e) +
-                                     "' is not a scale; valid forms: factor (value = factor h) or "
-                                     "(factor power) (value = factor h^power)");
+                                     "' is not a scale; valid forms: factor (value = factor h), "
+                                     "(factor power) (value = factor h^power) or (factor power offset) "
+                                     "(value = factor h^power + offset: (1 -1 1) is the 1/h + 1 nodes of "
+                                     "a nodal lattice on a unit length); on a list entry, a list of "
+                                     "those and constants, one per component: ((10 -1 1) 3 3)");
             }
             // Checked once with the first spacing; every level sets the same entries.
-            resolveSetting(root, s.path, number(s.factor * std::pow(spacings[0], s.power)), nullptr, e->where,
-                           "resolution/scale");
+            resolveSetting(root, s.path, s.at(spacings[0]), nullptr, e->where, "resolution/scale", true);
             scaled.push_back(s);
         }
     }
@@ -390,8 +477,7 @@ Study readStudy(const fs::path& root, std::optional<int> jobsOption) {
             std::string name = c.label;
             if (h) {
                 name += (name.empty() ? "" : "_") + std::string("h") + number(*h);
-                for (const auto& s : scaled)
-                    v.settings.push_back({s.path, {}, {}, number(s.factor * std::pow(*h, s.power))});
+                for (const auto& s : scaled) v.settings.push_back({s.path, {}, {}, s.at(*h)});
             }
             v.name = safeName(name);
             if (!names.insert(v.name).second)
@@ -408,7 +494,8 @@ Study readStudy(const fs::path& root, std::optional<int> jobsOption) {
     // The scaled settings were checked above; give them their file and key.
     for (auto& v : study.variants)
         for (auto& s : v.settings)
-            if (s.file.empty()) s = resolveSetting(root, s.path, s.value, nullptr, {}, "resolution/scale");
+            if (s.file.empty())
+                s = resolveSetting(root, s.path, s.value, nullptr, {}, "resolution/scale", true);
     return study;
 }
 
@@ -1034,6 +1121,33 @@ void report(const fs::path& studyDir, const Study& study, const std::vector<Outc
         if (fs::exists(studyDir / study.variants[i].name))
             results[i] =
                 collect(studyDir / study.variants[i].name, study.application, normOrder, referenceOrder);
+    // The studyDict's quantities of each finished run: values without an exact one, extrapolated
+    // in the table of compared values.
+    for (const auto& [name, command] : study.quantities) {
+        if (std::find(referenceOrder.begin(), referenceOrder.end(), name) == referenceOrder.end())
+            referenceOrder.push_back(name);
+        for (std::size_t i = 0; i < study.variants.size(); ++i) {
+            if (!outcomes[i].finished) continue;
+            const std::string run = "cd '" + (studyDir / study.variants[i].name).string() + "' && { " +
+                                    command + "; } 2> /dev/null";
+            std::string last;
+            if (FILE* out = popen(run.c_str(), "r")) {
+                char buffer[4096];
+                while (std::fgets(buffer, sizeof buffer, out)) {
+                    std::string text(buffer);
+                    while (!text.empty() && (text.back() == '\n' || text.back() == '\r')) text.pop_back();
+                    if (!text.empty()) last = text;
+                }
+                pclose(out);
+            }
+            const double value = toNumber(last);
+            if (std::isfinite(value))
+                results[i].references[name] = {value, NAN};
+            else
+                std::cout << "Warning: quantity " << name << " of " << study.variants[i].name
+                          << ": its command gave no number (last line '" << last << "')\n";
+        }
+    }
     std::string measure = study.measure;
     if (measure.empty() && !normOrder.empty()) measure = normOrder.front();
     if (measure.empty() && !referenceOrder.empty()) measure = referenceOrder.front();
@@ -1240,8 +1354,17 @@ int main(int argc, char** argv) {
         "        {\n"
         "            system/particleGenDict/regions/left/lattice/spacing 1;   // value = factor h\n"
         "            system/controlDict/deltaT (0.04 1);                     // value = factor h^power\n"
+        "            system/particleGenDict/regions/cube/lattice/points (1 -1 1);\n"
+        "                // value = factor h^power + offset; on a list of numbers, every component\n"
+        "                // (rounded where they are whole): points (9 9 9) at h = 0.125;\n"
+        "                // ((10 -1 1) 3 3): a rule per component, a number a constant\n"
         "        }\n"
         "    }\n"
+        "    quantities { twist \"awk -F, -f twistAngle.awk postProcessing/top/0/probes.csv | tail -n 1 | "
+        "cut "
+        "-d, -f2\"; }\n"
+        "                // values no summary prints: each command's last line of output in a finished\n"
+        "                // variant's directory, extrapolated with the compared values\n"
         "Variants are the product variants x axes x resolution. A finished variant (study/<v>/mfStudy.done,\n"
         "written after a successful run) is not rerun unless studyDict has changed its entries or a file\n"
         "of the base case that the variants copy has changed (the marker holds their fingerprint;\n"

@@ -57,7 +57,7 @@ expectError badScale "resolution
 {
     spacing (0.01 0.005);
     scale { system/controlDict/deltaT fast; }
-}" 4 "valid forms: factor (value = factor h) or (factor power)"
+}" 4 "valid forms: factor (value = factor h), (factor power)"
 
 expectError syntax "variants
 {
@@ -71,4 +71,13 @@ expectError badRun "$scale
 run sometimes;" 2 "valid choices: auto | allrun | application"
 expectError unknownFunctionObject "$scale
 error riemman/density/L1;" 2 "'riemman' is not a function object of system/controlDict; valid choices: riemann"
+# The quantities (values no summary prints) are quoted shell commands; the scale rules of a list
+# entry give as many components as it has.
+expectError unquotedQuantity "$scale
+quantities
+{
+    twist awk;
+}" 4 "quantity 'twist' must be one quoted shell command"
+expectError scaleComponents "resolution { spacing (0.01 0.005); scale { system/particleGenDict/regions/left/shape/min ((1 -1 0) 0); } }" 1 \
+    "gives 2 components, and it has 1"
 pass "every bad studyDict stopped before any run with its file, line and choices"

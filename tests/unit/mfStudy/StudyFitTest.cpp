@@ -53,6 +53,17 @@ TEST(StudyFit, richardsonRefusesOscillationAndBadLevels) {
     EXPECT_FALSE(richardson(0.1, 1.0, 0.2, 2.0, 0.4, 2.5));  // not refined
 }
 
+TEST(StudyFit, richardsonRefusesMissingValues) {
+    // A scheme whose runs report no such measure (NaN) has no order: it printed "Richardson
+    // order 1e-06" with an empty extrapolation (the twisting column's study, measured on no norm).
+    EXPECT_FALSE(richardson(0.4, NAN, 0.2, NAN, 0.1, NAN));
+    EXPECT_FALSE(richardson(0.4, 1.0, 0.2, NAN, 0.1, 0.25));
+    EXPECT_FALSE(richardson(0.4, 1.0, 0.2, 0.5, 0.1, INFINITY));
+    // Unequal ratios take the bisection: a NaN must not reach it either.
+    EXPECT_FALSE(richardson(0.5, NAN, 0.3, NAN, 0.1, NAN));
+    EXPECT_FALSE(richardson(1.0 / 6, NAN, 1.0 / 8, NAN, 1.0 / 12, NAN));  // the twisting column's levels
+}
+
 TEST(StudyFit, paretoFrontKeepsTheUndominated) {
     // (1, 0.5) (2, 0.1) (3, 0.2) (4, 0.05) (2, 0.3): the third is beaten by the second, the
     // fifth by the second too (as costly, more wrong).
