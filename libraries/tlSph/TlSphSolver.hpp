@@ -128,6 +128,7 @@ private:
     double essentialTime_ = 0;
     bool projectMomentum_ = true, projectDissipation_ = true, projectJacobian_ = true;
     bool currentWaveSpeed_ = true;
+    std::optional<double> deformedCourant_;  // tlSphProperties' deformedCourant, when given
     double spacing_ = 0, h_ = 0, cpMax_ = 0;
     std::unique_ptr<BodyForce> bodyForce_;  // null without a bodyForce sub-dictionary
     bool plastic_ = false;
