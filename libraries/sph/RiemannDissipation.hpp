@@ -22,8 +22,12 @@ public:
     struct Coefficients {
         double av = 1, bv = 2, arho = 0.5, brho = 2, ae = 0.1, be = 2;
         bool alternativeSignal = false, allPairs = false;
+        bool contactLimiter = true;  // densityLimiter contact (default), false: none
     };
     const Coefficients& coefficients() const { return k_; }
+
+    // κ of Eq. 4.26′ (RiemannDissipation.cpp): the density contrast |ρ_i − ρ_j|/max(ρ_i, ρ_j) at which a pair is a contact in full.
+    static constexpr double contactContrast = 0.3;
 
 private:
     Coefficients k_;
