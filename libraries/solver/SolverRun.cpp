@@ -61,7 +61,8 @@ std::string errorLines(const std::vector<FunctionObjectList::ErrorRecord>& recor
         return std::string(s);
     };
     std::ostringstream s;
-    s << "Errors against the reference (process CPU time at the end of the run "
+    // Not "Error...": a line that starts so is an error message to scripts and mfStudy's diagnosis.
+    s << "Compared with the reference (process CPU time at the end of the run "
       << text(processCpuSeconds(), "%.6g") << " s):";
     for (const auto& r : records) {
         s << "\n    error " << r.name << "  " << text(r.value, "%.10g") << " (exact "
@@ -332,7 +333,17 @@ int SolverRun::run(Solver& solver) {
         }
         const bool writing = time.writeTime() || stopSignal != 0;
         if (writing) write(solver);
-        functions.execute(writing);
+        try {
+            functions.execute(writing);
+        } catch (const RunError&) {
+            // A function object that stops the run (conservedQuantities' maxEnergyGrowth): the
+            // state it judged is written for diagnosis, as a failing step's is.
+            if (!writing) {
+                write(solver);
+                Log::info("Wrote the failing state to " + time.timeName() + "/");
+            }
+            throw;
+        }
 
         const double elapsed = stepping.seconds();
         if (writing || (Log::interactive() && elapsed - lastProgress > 1.0)) {

@@ -654,7 +654,10 @@ std::string diagnose(const fs::path& dir, const std::string& application, int st
         std::ifstream in(log);
         std::string line;
         while (std::getline(in, line))
-            if (line.rfind("Error", 0) == 0 || line.find("FATAL") != std::string::npos) return line;
+            // "Error: ..." and "Error (internal): ..." (Application.cpp), not the summary's "Error norms".
+            if (line.rfind("Error:", 0) == 0 || line.rfind("Error (", 0) == 0 ||
+                line.find("FATAL") != std::string::npos)
+                return line;
     }
     // No error line: the runner's last words (a shell's "command not found", an Allrun's message).
     std::string last;

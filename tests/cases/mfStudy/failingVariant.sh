@@ -28,4 +28,17 @@ byHand=$(grep ',riemann/density,' "$d/postProcessing/runSummary/0/runSummary.csv
 grep -q "| noKernel |.*| failed |.*unknown kernel type" "$c/study/results.md" || fail "results.md lacks the diagnosis"
 grep -q "2 of 3 variants failed" "$c/log.mfStudy" || fail "no count of failures: $(cat "$c/log.mfStudy")"
 [ -f "$c/study/noKernel/mfStudy.done" ] && fail "a failed variant was marked finished"
+# A run that finished its summary (its "Error norms" line) and then failed, here an Allrun that
+# exits 3 after the solver: the diagnosis is the exit status and the runner's last words, not the
+# summary's "Error norms (bought with ...)" line, which only looks like an error message.
+e=$(newCase afterSummary)
+printf '%s\n' 'particleGen -case . > log.particleGen 2>&1 && impactSph -case . > log.impactSph 2>&1' \
+    'echo "post-processing failed"' 'exit 3' > "$e/Allrun"
+cat > "$e/system/studyDict" <<'DICT'
+run allrun;
+variants { late { system/controlDict/deltaT 2e-4; } }
+DICT
+mfStudy -case "$e" > "$e/log.mfStudy" 2>&1 || fail "mfStudy failed: $(cat "$e/log.mfStudy")"
+grep -q "^late,.*,failed,.*\"exit status 3: post-processing failed\"" "$e/study/results.csv" ||
+    fail "late row: $(grep '^late,' "$e/study/results.csv")"
 pass "failing variants reported with their diagnoses; the study went on"

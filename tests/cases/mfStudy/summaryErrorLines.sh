@@ -10,7 +10,7 @@
 check() {  # check <log> <steps>: every error line well formed and consistent
     local log="$1" steps="$2"
     local total
-    total=$(sed -n 's/^Errors against the reference (.*process CPU time at the end of the run \([^ ]*\) s):$/\1/p' "$log")
+    total=$(sed -n 's/^Compared with the reference (process CPU time at the end of the run \([^ ]*\) s):$/\1/p' "$log")
     positive "$total" || fail "$log: no heading with the CPU time: $(tail -n 30 "$log")"
     awk -v total="$total" -v steps="$steps" '
         /^    error / {
