@@ -89,6 +89,23 @@ void MomentumProjection<Dim>::mean(std::vector<double>& g, const std::vector<dou
     parallelFor(n, [&](std::size_t i) { g[i] -= m; });
 }
 
+template <int Dim>
+void MomentumProjection<Dim>::mean(std::vector<double>& g, const std::vector<double>& volume,
+                                   const std::vector<char>& skip) {
+    if (skip.empty()) return mean(g, volume);
+    const std::size_t n = g.size();
+    const auto s = GlobalReduce::sum<SumArray<2>>(n, [&](std::size_t i) {
+        SumArray<2> t;
+        if (!skip[i]) t.s = {volume[i], volume[i] * g[i]};
+        return t;
+    });
+    if (!(s.s[0] > 0)) return;
+    const double m = s.s[1] / s.s[0];
+    parallelFor(n, [&](std::size_t i) {
+        if (!skip[i]) g[i] -= m;
+    });
+}
+
 template struct MomentumProjection<1>;
 template struct MomentumProjection<2>;
 template struct MomentumProjection<3>;

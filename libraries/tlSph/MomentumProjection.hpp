@@ -25,6 +25,9 @@ struct MomentumProjection {
     static void momentum(std::vector<Vector<Dim>>& f, const std::vector<double>& volume,
                          const std::vector<Vector<Dim>>& xTilde, bool angular = true);
     static void mean(std::vector<double>& g, const std::vector<double>& volume);
+    // The same over the particles with skip[a] == 0 only (the others keep g); skip empty: all.
+    static void mean(std::vector<double>& g, const std::vector<double>& volume,
+                     const std::vector<char>& skip);
 };
 
 extern template struct MomentumProjection<1>;

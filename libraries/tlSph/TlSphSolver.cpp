@@ -200,6 +200,39 @@ void TlSphSolver<Dim>::readMaterials() {
     models.constitutiveLaw = ModelUse::required;
     materials_ = std::make_unique<MaterialSet<Dim>>(materialProperties_, models);
     plastic_ = materials_->usesPlasticState();
+    // {p,F,J}: the evolved J carries the volumetric response and F the isochoric one. A law whose
+    // isochoric part reads J as well (neoHookean, mooneyRivlin: mu/2 J^-2/3 F:F) gives, with J
+    // apart from det F, a volumetric stiffness of F alone that is negative (linearised in plane
+    // strain, P = mu (e + e^T) - 5/3 mu tr(e) I + (mu + kappa)(J - 1) I: -4/3 mu per unit tr(e)
+    // at fixed J). D(J) smooths J at the particle scale while F keeps its own short waves, so
+    // those waves of det F grow: the oscillating plate at nu = 0.45 with jacobian (0 0.125) grew
+    // its energy 1e5-fold in 0.04 s (issue 16). Such a law is evaluated at J = det F and its
+    // volumetric part moved to J (computeStress). Which laws need it is measured here, once:
+    // P(J1) - P(J0) = (p(J1) - p(J0)) H at a sheared, stretched state holds for a law whose
+    // isochoric part is F's alone (j2Plasticity, linearElastic: evaluated as they are).
+    if (formulation_.evolvesJ() && !formulation_.evolvesH()) {
+        splitJacobian_.assign(materials_->size(), 0);
+        Tensor<3> F = Tensor<3>::Identity();
+        F(0, 0) = 1.05, F(1, 1) = 0.97, F(0, 1) = 0.03;
+        const Tensor<3> H = cofactor(F);
+        for (std::size_t k = 0; k < materials_->size(); ++k) {
+            Tensor<3> P[2];
+            double p[2], J[2] = {F.determinant(), 1.02 * F.determinant()};
+            for (int s = 0; s < 2; ++s) {
+                SymmTensor<3> cp = SymmTensor<3>::fromFull(Tensor<3>::Identity());
+                double epsP = 0;
+                ConstitutiveLaw::Fields f;
+                f.size = 1, f.F = &F, f.H = &H, f.J = &J[s], f.P = &P[s], f.pressure = &p[s];
+                f.plasticState = &cp, f.plasticStrain = &epsP;
+                law(k).stress(f, false);
+            }
+            const double scale = P[0].norm() + std::abs(p[1] - p[0]) * H.norm() + law(k).shearModulus();
+            splitJacobian_[k] = (P[1] - P[0] - (p[1] - p[0]) * H).norm() > 1e-9 * scale;
+            if (splitJacobian_[k])
+                Log::info("formulation pFJ: material " + materials_->names()[k] + "'s " + law(k).type() +
+                          " law is evaluated at J = det F, its pressure at the evolved J");
+        }
+    }
     assignMaterials(*particles_, materials_->names(), materialProperties_);
     material_ = &particles_->integerField("material");
 }
@@ -373,7 +406,24 @@ void TlSphSolver<Dim>::computeStress(bool updateState) {
             epsP = (*plasticStrain_)[i];
             f.plasticState = &cp, f.plasticStrain = &epsP;
         }
+        // {p,F,J} with a law whose isochoric part reads J (splitJacobian_): the law at J = det F,
+        // then the volumetric part moved to the evolved J, P += (p(J) - p(det F)) H.
+        const bool split = !splitJacobian_.empty() && splitJacobian_[(*material_)[i]];
+        const SymmTensor<3> cpBefore = cp;
+        const double epsPBefore = epsP, detF = F3.determinant();
+        if (split) f.J = &detF;
         law.stress(f, updateState);
+        if (split) {
+            Tensor<3> unused;
+            double pJ = 0, epsPJ = epsPBefore;
+            SymmTensor<3> cpJ = cpBefore;
+            ConstitutiveLaw::Fields g = f;
+            g.J = &J, g.P = &unused, g.pressure = &pJ;
+            if (law.usesPlasticState()) g.plasticState = &cpJ, g.plasticStrain = &epsPJ;
+            law.stress(g, false);
+            P3 += (pJ - pressure) * H3;
+            pressure = pJ;
+        }
         if (updateState && law.usesPlasticState()) {
             const Tensor<3> c = cp.full();
             (*plasticDeformation_)[i] = SymmTensor<Dim>::fromFull(inPlane<Dim>(c));
@@ -484,6 +534,11 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
     const double* J = J_ ? J_->data() : nullptr;
     const double* rho0 = rho0_.data();
     const bool lapMomentum = !lapP_.empty(), lapJacobian = !lapJ_.empty();
+    // The particles whose motion is prescribed in every direction are outside the operators of
+    // D(J) (updateKinematic: why).
+    if (lapJacobian) updateKinematic(t);
+    const char* kinematic = kinematic_.empty() ? nullptr : kinematic_.data();
+    const bool lapJacobianHere = lapJacobian && !freeOperators_;
     const bool evolveF = formulation_.evolvesF();
     std::vector<Vector<Dim>> force(n);
     parallelForWork(n, offsets[n], [&](std::size_t a) {
@@ -498,7 +553,7 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
             G += Vb * (v[b] - v[a]) * g[k].transpose();
             T += Vb * (P[b] * gAtNeighbour[k] - P[a] * g[k]);
             if (lapMomentum) Lp += Vb * lap[k] * (rho0[b] * v[b] - pa);
-            if (lapJacobian) LJ += Vb * lap[k] * (J[b] - J[a]);
+            if (lapJacobianHere && !(kinematic && kinematic[b])) LJ += Vb * lap[k] * (J[b] - J[a]);
         }
         force[a] = -T;
         if (evolveF) dFdt_[a] = G;
@@ -508,7 +563,7 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
             if (J_) dJdt_[a] = cofactor3(a).cwiseProduct(G3).sum();
         }
         if (lapMomentum) lapP_[a] = Lp;
-        if (lapJacobian) lapJ_[a] = LJ;
+        if (lapJacobianHere) lapJ_[a] = (kinematic && kinematic[a]) ? 0.0 : LJ;
     });
     particles_->clearGhosts();
     pairInteractions_ += double(offsets[n]);
@@ -518,25 +573,31 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
     auto dissipationTime = phase("dissipation");
     std::vector<Vector<Dim>> dissipationP;
     std::vector<double> dissipationJ;
-    if (!lap2P_.empty() || !lap2J_.empty()) {
+    if (freeOperators_) freeJacobianLaplacians();
+    const bool lap2JHere = !lap2J_.empty() && !freeOperators_;
+    if (!lap2P_.empty() || lap2JHere) {
         // The Laplacians at the ghosts: their sources' mapped (lapP_, lapJ_ hold n + ghosts).
         if (!lap2P_.empty())
             imagesOf(lapP_, n,
                      [&](std::size_t g, const Vector<Dim>& a) { return ghosts_.reflectVector(g, a); });
-        if (!lap2J_.empty())
+        if (lap2JHere)
             imagesOf(lapJ_, n, [&](std::size_t g, double a) { return ghosts_.reflectScalar(g, a); });
         const Vector<Dim>* Lp = lap2P_.empty() ? nullptr : lapP_.data();
-        const double* LJ = lap2J_.empty() ? nullptr : lapJ_.data();
+        const double* LJ = lap2JHere ? lapJ_.data() : nullptr;
+        const auto& mirror = operators_->mirror();
+        const char* kinematic = kinematic_.empty() ? nullptr : kinematic_.data();
         parallelForWork(n, offsets[n], [&](std::size_t a) {
             Vector<Dim> L2p = Vector<Dim>::Zero();
             double L2J = 0;
             for (std::size_t k = offsets[a]; k < offsets[a + 1]; ++k) {
                 const std::size_t b = rows.indices()[k];
                 if (Lp) L2p += V_[b] * lap[k] * (Lp[b] - Lp[a]);
-                if (LJ) L2J += V_[b] * lap[k] * (LJ[b] - LJ[a]);
+                // L*[L[J]]: the V-adjoint of L (its weight at b's row, lap[mirror[k]]) on L[J].
+                if (LJ && !(kinematic && kinematic[b]))
+                    L2J += V_[b] * (lap[mirror[k]] * LJ[b] - lap[k] * LJ[a]);
             }
             if (!lap2P_.empty()) lap2P_[a] = L2p;
-            if (!lap2J_.empty()) lap2J_[a] = L2J;
+            if (lap2JHere) lap2J_[a] = L2J;
         });
     }
     {
@@ -579,7 +640,11 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
         MomentumProjection<Dim>::momentum(force, V_, xTilde);
     }
     if (!dissipationJ.empty()) {
-        if (projectJacobian_) MomentumProjection<Dim>::mean(dissipationJ, V_);
+        if (!kinematic_.empty())
+            parallelFor(n, [&](std::size_t a) {
+                if (kinematic_[a]) dissipationJ[a] = 0;
+            });
+        if (projectJacobian_) MomentumProjection<Dim>::mean(dissipationJ, V_, kinematic_);
         parallelFor(n, [&](std::size_t a) { dJdt_[a] += dissipationJ[a]; });
     }
     projectionTime.stop();
@@ -612,6 +677,90 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
         essential_->project(rate, prescribedRates(boundaries_, essential_->constraints(), rho0_, t));
         parallelFor(n, [&](std::size_t a) { acceleration_[a] = rate[a] / rho0_[a]; });
     }
+}
+
+template <int Dim>
+void TlSphSolver<Dim>::updateKinematic(double t) {
+    // A particle whose motion is prescribed in every direction (fixed, prescribedVelocity) keeps
+    // J = det F: D(J) neither acts on it nor reads it. Measured on the oscillating plate ({p,F,J},
+    // nu = 0.45, jacobian (0 0.125), dx = 4 mm): with D(J) on the clamped particles their J
+    // drifted from det F = 1 with nothing to restore it (J <= 0 at t = 0.103 s before the fix);
+    // with D(J) only off there but the clamp still read by L[J] (Dirichlet data), the energy grew
+    // 11% in 0.27 s; with the clamp outside L and L* altogether it falls 3.7% (the {p,F} plate
+    // 0.9%). The operators on the free body make L exact on linear J at the clamp's face again.
+    if (boundaries_.empty()) return;
+    bool changed = !kinematicBuilt_;
+    for (std::size_t k = 0; k < boundaries_.size(); ++k)
+        changed = changed || (boundaries_[k].active(kinematicTime_) != boundaries_[k].active(t));
+    if (!changed) return;
+    kinematicBuilt_ = true;
+    kinematicTime_ = t;
+    const std::size_t n = x_.size(), all = n + ghosts_.size();
+    kinematic_.assign(all, 0);
+    bool any = false;
+    for (const auto& c : constraintsFrom(boundaries_, *particles_, t))
+        if (c.projector.trace() > Dim - 0.5) kinematic_[c.particle] = 1, any = true;
+    for (std::size_t g = 0; g < ghosts_.size(); ++g) kinematic_[n + g] = kinematic_[ghosts_.source[g]];
+    freeOperators_.reset();
+    free_.clear();
+    if (!any) {
+        kinematic_.clear();
+        return;
+    }
+    std::vector<Vector<Dim>> X;
+    std::vector<double> V;
+    for (std::size_t i = 0; i < all; ++i)
+        if (!kinematic_[i]) {
+            free_.push_back(i);
+            X.push_back(i < n ? (*X_)[i] : ghosts_.position[i - n]);
+            V.push_back(V_[i]);
+        }
+    typename ReferenceOperators<Dim>::Options options;
+    options.laplacian = true;
+    try {
+        freeOperators_ = std::make_unique<ReferenceOperators<Dim>>(X, V, h_, *kernel_, options);
+    } catch (const Error& e) {
+        // A free particle with too few free neighbours: D(J) keeps the body's operators, the
+        // kinematic particles left out of its sums (not exact on linear J at the clamp's face).
+        Log::warning(std::string("D(J) on the operators of the whole body: those of the free particles "
+                                 "could not be built (") +
+                     e.what() + ")");
+        freeOperators_.reset();
+    }
+}
+
+template <int Dim>
+void TlSphSolver<Dim>::freeJacobianLaplacians() {
+    // L[J] and L*[L[J]] on the free body (free_ indexes n + ghosts; ghosts carry their sources'
+    // images), written to lapJ_, lap2J_ of the real free particles (0 at the kinematic ones).
+    const std::size_t n = x_.size(), m = free_.size();
+    const auto& ops = *freeOperators_;
+    const std::vector<double>& J = *J_;
+    std::vector<double> Jfree(m);
+    parallelFor(m, [&](std::size_t s) {
+        const std::size_t i = free_[s];
+        Jfree[s] = i < n ? J[i] : ghosts_.reflectJacobian(i - n, J[ghosts_.source[i - n]]);
+    });
+    const std::vector<double> L = ops.laplacianOf(Jfree);
+    std::fill(lapJ_.begin(), lapJ_.begin() + n, 0.0);
+    if (!lap2J_.empty()) std::fill(lap2J_.begin(), lap2J_.end(), 0.0);
+    const auto& rows = ops.neighbours();
+    const auto& offsets = rows.offsets();
+    const auto& lap = ops.laplacian();
+    const auto& mirror = ops.mirror();
+    const auto& V = ops.volume();
+    parallelFor(m, [&](std::size_t s) {
+        const std::size_t i = free_[s];
+        if (i >= n) return;
+        lapJ_[i] = L[s];
+        if (lap2J_.empty()) return;
+        double L2 = 0;
+        for (std::size_t k = offsets[s]; k < offsets[s + 1]; ++k) {
+            const std::size_t b = rows.indices()[k];
+            L2 += V[b] * (lap[mirror[k]] * L[b] - lap[k] * L[s]);
+        }
+        lap2J_[i] = L2;
+    });
 }
 
 template <int Dim>
@@ -718,12 +867,33 @@ void TlSphSolver<Dim>::checkState(const char* phaseName) const {
           << ", material " << materials_->names()[(*material_)[i]] << ") has J = " << jacobian(i)
           << ", |v| = " << v_[i].norm() << ", |F| = " << (*F_)[i].norm() << "; " << count
           << " particles affected.\n    ";
-        if (!(jacobian(i) > 0) && std::isfinite(jacobian(i)))
+        if (!(jacobian(i) > 0) && std::isfinite(jacobian(i))) {
+            // The remedies this run has not taken yet (issue 16: the advice named pFJ to a pFJ run).
             s << "The deformation has inverted the particle (J <= 0): hourglass modes or a too coarse "
-                 "discretisation of a large local deformation. Raise the momentum eps4 of the JST "
-                 "dissipation, use formulation pFJ near incompressibility, or reduce maxCo "
-                 "(system/controlDict).";
-        else
+                 "discretisation of a large local deformation.";
+            if (J_) {
+                const double detF = embed<Dim>((*F_)[i], 1.0).determinant();
+                s << " Its evolved J " << jacobian(i) << " against det F " << detF
+                  << (std::abs(jacobian(i) - detF) > 0.1 * std::abs(detF)
+                          ? ": J has left its F (the jacobian coefficients of the dissipation drive it)."
+                          : ".");
+            }
+            std::vector<std::string> remedies;
+            if (dissipationModel_->actsOnMomentum())
+                remedies.push_back("raise the momentum eps4 of the dissipation (constant/tlSphProperties)");
+            else
+                remedies.push_back("stabilise the momentum (dissipation { type jst; momentum (0 0.125); })");
+            if (!J_)
+                remedies.push_back("near incompressibility use formulation pFJ with jacobian (0 0.125)");
+            else if (!dissipationModel_->actsOnJacobian())
+                remedies.push_back("smooth J: jacobian (0 0.125) in the dissipation");
+            remedies.push_back("refine the lattice");
+            if (courant() > 0.1) remedies.push_back("reduce maxCo (system/controlDict)");
+            s << " Remedies (this run: formulation " << formulation_.name() << ", maxCo " << courant()
+              << "): ";
+            for (std::size_t k = 0; k < remedies.size(); ++k) s << (k ? "; " : "") << remedies[k];
+            s << ".";
+        } else
             s << "The state is no longer finite: the step is unstable (maxCo " << courant()
               << "; JST eps4 must exceed maxCo^3/8), or a boundary condition drives the body "
                  "faster than the material can carry.";
@@ -750,6 +920,20 @@ std::optional<double> TlSphSolver<Dim>::internalEnergy() const {
                                                     plasticOutOfPlane_ ? (*plasticOutOfPlane_)[i] : 1.0));
             epsP = (*plasticStrain_)[i];
             f.plasticState = &cp, f.plasticStrain = &epsP;
+        }
+        if (!splitJacobian_.empty() && splitJacobian_[(*material_)[i]]) {
+            // W(F, det F) + U(J) - U(det F), U(J) - U(det F) = (p(J) + p(det F))/2 (J - det F)
+            // (exact for the laws' U = kappa/2 (J - 1)^2).
+            const double detF = F3.determinant();
+            const SymmTensor<3> cpBefore = cp;
+            double pF = 0, pJ = 0, wJ = 0;
+            f.J = &detF, f.pressure = &pF;
+            law.stress(f, false);
+            cp = cpBefore;
+            f.J = &J, f.pressure = &pJ, f.energyDensity = &wJ;
+            law.stress(f, false);
+            w[i] += 0.5 * (pJ + pF) * (J - detF);
+            return;
         }
         law.stress(f, false);
     });

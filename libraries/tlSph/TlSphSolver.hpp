@@ -126,6 +126,21 @@ private:
     // conditions active at essentialTime_.
     std::unique_ptr<LagrangeMultiplierProjection<Dim>> essential_;
     double essentialTime_ = 0;
+    // Particles whose motion every active condition prescribes in all directions (fixed,
+    // prescribedVelocity): their J follows their F (no D(J)), as of kinematicTime_.
+    std::vector<char> kinematic_;
+    bool kinematicBuilt_ = false;
+    // The operators of D(J) on the body without those particles (real and ghost, free[s] their
+    // index in n + ghosts), so that L[J] is exact on linear J at the clamp's face as at a free
+    // surface. Null without kinematic particles (D(J) then uses operators_).
+    std::unique_ptr<ReferenceOperators<Dim>> freeOperators_;
+    std::vector<std::size_t> free_;
+    // Per material, {p,F,J} only: the law is evaluated at J = det F and P += (p(J) - p(det F)) H
+    // (readMaterials: why and which laws).
+    std::vector<char> splitJacobian_;
+    double kinematicTime_ = 0;
+    void updateKinematic(double t);
+    void freeJacobianLaplacians();
     bool projectMomentum_ = true, projectDissipation_ = true, projectJacobian_ = true;
     bool currentWaveSpeed_ = true;
     std::optional<double> deformedCourant_;  // tlSphProperties' deformedCourant, when given

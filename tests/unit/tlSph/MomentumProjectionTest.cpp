@@ -113,5 +113,23 @@ TEST(MomentumProjection, MeanRemoval) {
     EXPECT_NEAR(g[1] - g[0], 1.0, 1e-15);
 }
 
+// The J dissipation's mean is removed over the particles it acts on: the clamped ones (skip 1)
+// keep their value (0: D(J) is off there) and do not enter the mean (issue 16: the mean of the
+// whole body moved the clamped particles' J off det F).
+TEST(MomentumProjection, MeanRemovalOverTheUnskippedParticlesOnly) {
+    std::vector<double> g{1, 2, 0, 4}, V{1, 1, 2, 0.5};
+    const std::vector<char> skip{0, 0, 1, 0};
+    MomentumProjection<3>::mean(g, V, skip);
+    EXPECT_EQ(g[2], 0.0);  // untouched
+    // sum over the unskipped V g = 0: mean (1 + 2 + 2) / 2.5 = 2 removed.
+    EXPECT_NEAR(g[0], -1.0, 1e-15);
+    EXPECT_NEAR(g[1], 0.0, 1e-15);
+    EXPECT_NEAR(g[3], 2.0, 1e-15);
+    std::vector<double> h{1, 2, 3, 4}, all{1, 2, 3, 4};
+    MomentumProjection<3>::mean(h, V, {});  // no mask: the plain mean removal
+    MomentumProjection<3>::mean(all, V);
+    EXPECT_EQ(h, all);
+}
+
 }  // namespace
 }  // namespace mfdyn
