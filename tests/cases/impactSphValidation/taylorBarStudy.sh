@@ -34,8 +34,9 @@ for s in "${spacings[@]}"; do
     R=$(awk -v a="$(column "$csv" position_x_max)" -v b="$(column "$csv" position_y_max)" -v s="$s" \
         'BEGIN { m = a > b ? a : b; printf "%.4f", (m + s / 2) * 1e3 }')
     [ -f "$c/8e-05/particles.vtp" ] || fail "s = $s: no 8e-05/particles.vtp"
-    read -r ringCount gap ringRadius <<< "$(python3 "$here/rimGaps.py" "$c/8e-05/particles.vtp" "$s" quarter)" \
-        || fail "rimGaps.py failed on s = $s"
+    rim=$(python3 "$here/rimGaps.py" "$c/8e-05/particles.vtp" "$s" quarter) || fail "rimGaps.py failed on s = $s: $rim"
+    read -r ringCount gap ringRadius <<< "$rim"
+    [ -n "$gap" ] || fail "rimGaps.py printed nothing for s = $s"
     drift=$(awk '/conserved: totalEnergy drift/ { print $4 }' "$c/log.impactSph" | tail -n 1)
     awk -v e="$drift" 'BEGIN { if (e < 0) e = -e; exit !(e < 1e-4) }' || fail "s = $s: total energy drift $drift (the mirror wall does no work)"
     lengths+=("$L"); radii+=("$R"); gaps+=("$gap")
