@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <utility>
 #include <vector>
 
 namespace mfdyn {
@@ -32,6 +33,16 @@ public:
     std::size_t maxRowSize() const;
     // Whether j is in row i exactly when i is in row j (true for the symmetric pair criteria).
     bool symmetric() const;
+
+    // Hands the storage over to a rebuild and leaves this list empty: refilling the same memory
+    // saves the page faults and zeroing of a fresh array (200 MB per 10^6 particles at 50
+    // neighbours), which cost a tenth of a build (NeighbourSearch::list).
+    void releaseStorage(std::vector<std::size_t>& offsets, std::vector<Index>& indices) {
+        offsets = std::move(offsets_);
+        indices = std::move(indices_);
+        offsets_.assign(1, 0);
+        indices_.clear();
+    }
 
     // Exact equality of offsets and indices: the test of thread-count determinism.
     bool operator==(const NeighbourList&) const = default;

@@ -83,26 +83,33 @@ void NeighbourSearch<Dim>::binSorted(const std::vector<Vector<Dim>>& positions, 
 
 template <int Dim>
 template <PairCriterion C, bool Periodic>
-void NeighbourSearch<Dim>::gatherRow(std::size_t k, std::vector<Index>& out,
-                                     std::vector<std::array<Index, 2>>& runs) const {
-    const std::vector<Vector<Dim>>& sortedPosition = bins_.sortedPositions();
-    const std::vector<Index>& order = bins_.order();
-    const Vector<Dim>& xi = sortedPosition[k];
-    const double ri2 = sortedRadius2_[k];
+std::size_t NeighbourSearch<Dim>::gatherRow(std::size_t k, std::vector<Index>& buffer, std::size_t used,
+                                            std::vector<std::array<Index, 2>>& runs) const {
+    const Vector<Dim>* const sortedPosition = bins_.sortedPositions().data();
+    const Index* const order = bins_.order().data();
+    const double* const radius2 = sortedRadius2_.data();
+    const Vector<Dim> xi = sortedPosition[k];
+    const double ri2 = radius2[k];
     // Any j with d < max(r_i, r_j) is within maxRadius; the other criteria stay within r_i.
     const double reach = C == PairCriterion::either ? maxRadius_ : std::sqrt(ri2);
     const bool includeSelf = options_.includeSelf;
-    bins_.template runs<Periodic>(xi, reach, runs);
 
+    // The runs into scratch that is only grown (a vector cleared and pushed to per query cost a
+    // tenth of the build), then their candidates tested in one loop.
+    std::size_t runCount = 0, candidates = 0;
+    bins_.template visitRuns<Periodic>(xi, reach, [&](Index begin, Index end) {
+        if (runCount == runs.size()) runs.resize(std::max<std::size_t>(64, 2 * runCount));
+        runs[runCount++] = {begin, end};
+        candidates += end - begin;
+    });
     // Room for every candidate first, so that the test below can store each one and advance
-    // only past those that pass: no branch on the outcome, which is close to a coin toss.
-    std::size_t candidates = 0;
-    for (const auto& [begin, end] : runs) candidates += end - begin;
-    const std::size_t start = out.size();
-    out.resize(start + candidates);
-    Index* const row = out.data() + start;
+    // only past those that pass: no branch on the outcome, which is close to a coin toss. The
+    // buffer only grows (kept between builds), so no element is initialised twice.
+    if (buffer.size() < used + candidates) buffer.resize(std::max(2 * buffer.size(), used + candidates));
+    Index* const row = buffer.data() + used;
     std::size_t found = 0;
-    for (const auto& [begin, end] : runs) {
+    for (std::size_t r = 0; r < runCount; ++r) {
+        const std::size_t begin = runs[r][0], end = runs[r][1];
         for (std::size_t l = begin; l < end; ++l) {
             Vector<Dim> dx;
             if constexpr (Periodic)
@@ -112,9 +119,9 @@ void NeighbourSearch<Dim>::gatherRow(std::size_t k, std::vector<Index>& out,
             const double d2 = dx.squaredNorm();
             bool in;
             if constexpr (C == PairCriterion::either)
-                in = d2 < std::max(ri2, sortedRadius2_[l]);
+                in = d2 < std::max(ri2, radius2[l]);
             else if constexpr (C == PairCriterion::both)
-                in = d2 < std::min(ri2, sortedRadius2_[l]);
+                in = d2 < std::min(ri2, radius2[l]);
             else
                 in = d2 < ri2;
             in = l == k ? includeSelf : in;
@@ -122,7 +129,7 @@ void NeighbourSearch<Dim>::gatherRow(std::size_t k, std::vector<Index>& out,
             found += in;
         }
     }
-    out.resize(start + found);
+    return used + found;
 }
 
 template <int Dim>
@@ -137,26 +144,171 @@ void NeighbourSearch<Dim>::fillBlocks() {
 #pragma omp parallel for schedule(dynamic) if (blocks > 1)
     for (std::int64_t b = 0; b < blocks; ++b) {
         std::vector<Index>& buffer = blockIndices_[std::size_t(b)];
-        buffer.clear();
+        std::size_t used = 0;
         std::vector<std::array<Index, 2>> runs;
         const std::size_t end = std::min(n, std::size_t(b + 1) * rowBlock);
         for (std::size_t k = std::size_t(b) * rowBlock; k < end; ++k) {
-            const std::size_t start = buffer.size();
-            gatherRow<C, Periodic>(k, buffer, runs);
-            if (options_.sortRows && !std::is_sorted(buffer.begin() + start, buffer.end()))
-                std::sort(buffer.begin() + start, buffer.end());
-            rowLength_[k] = Index(buffer.size() - start);
+            const std::size_t start = used;
+            used = gatherRow<C, Periodic>(k, buffer, used, runs);
+            if (options_.sortRows && !std::is_sorted(buffer.begin() + start, buffer.begin() + used))
+                std::sort(buffer.begin() + start, buffer.begin() + used);
+            rowLength_[k] = Index(used - start);
         }
     }
 }
 
 template <int Dim>
-NeighbourList NeighbourSearch<Dim>::list() {
+template <PairCriterion C>
+std::size_t NeighbourSearch<Dim>::gatherForward(std::size_t k, std::vector<Index>& buffer, std::size_t used,
+                                                std::vector<std::array<Index, 2>>& runs) const {
+    const Vector<Dim>* const sortedPosition = bins_.sortedPositions().data();
+    const double* const radius2 = sortedRadius2_.data();
+    const Vector<Dim> xi = sortedPosition[k];
+    const double ri2 = radius2[k];
+    const double reach = C == PairCriterion::either ? maxRadius_ : std::sqrt(ri2);
+    // The runs of the full stencil from place k + 1 on: rows of cells below the particle's own
+    // row skipped, its own row cut after k.
+    std::size_t runCount = 0, candidates = 0;
+    bins_.template visitRuns<false>(
+        xi, reach,
+        [&](Index begin, Index end) {
+            begin = std::max(begin, Index(k + 1));
+            if (begin >= end) return;
+            if (runCount == runs.size()) runs.resize(std::max<std::size_t>(64, 2 * runCount));
+            runs[runCount++] = {begin, end};
+            candidates += end - begin;
+        },
+        bins_.rowOf(xi));
+    if (buffer.size() < used + candidates) buffer.resize(std::max(2 * buffer.size(), used + candidates));
+    Index* const row = buffer.data() + used;
+    std::size_t found = 0;
+    for (std::size_t r = 0; r < runCount; ++r) {
+        const std::size_t begin = runs[r][0], end = runs[r][1];
+        for (std::size_t l = begin; l < end; ++l) {
+            // The same expression as gatherRow's: x_k - x_l and x_l - x_k have the same squared
+            // norm bit for bit, so the pair passes here exactly when it passes from either side.
+            const Vector<Dim> dx = xi - sortedPosition[l];
+            const double d2 = dx.squaredNorm();
+            bool in;
+            if constexpr (C == PairCriterion::either)
+                in = d2 < std::max(ri2, radius2[l]);
+            else if constexpr (C == PairCriterion::both)
+                in = d2 < std::min(ri2, radius2[l]);
+            else
+                in = d2 < ri2;
+            row[found] = Index(l);  // a place: the rows are assembled from places in list()
+            found += in;
+        }
+    }
+    return used + found;
+}
+
+template <int Dim>
+template <PairCriterion C>
+void NeighbourSearch<Dim>::fillBlocksHalf() {
+    const std::size_t n = bins_.size();
+    const std::int64_t blocks = std::int64_t((n + rowBlock - 1) / rowBlock);
+    blockIndices_.resize(std::size_t(blocks));
+    rowLength_.resize(n);
+#pragma omp parallel for schedule(dynamic) if (blocks > 1)
+    for (std::int64_t b = 0; b < blocks; ++b) {
+        std::vector<Index>& buffer = blockIndices_[std::size_t(b)];
+        std::size_t used = 0;
+        std::vector<std::array<Index, 2>> runs;
+        const std::size_t end = std::min(n, std::size_t(b + 1) * rowBlock);
+        for (std::size_t k = std::size_t(b) * rowBlock; k < end; ++k) {
+            const std::size_t start = used;
+            used = gatherForward<C>(k, buffer, used, runs);
+            rowLength_[k] = Index(used - start);
+        }
+    }
+}
+
+// The half stencil's rows: row k is, in place order, the places l < k whose forward half holds
+// k (in the order of l, as the forward halves are read in place order), k itself when asked
+// for, then k's own forward half: exactly the full stencil's row, with half its distance tests.
+template <int Dim>
+void NeighbourSearch<Dim>::assembleHalf(std::vector<std::size_t>& offsets, std::vector<Index>& indices) {
+    const std::vector<Index>& order = bins_.order();
+    const std::size_t n = order.size();
+    const std::int64_t blocks = std::int64_t(blockIndices_.size());
+    auto forEachBlock = [&](auto&& f) {
+        for (std::int64_t b = 0; b < blocks; ++b) f(b);
+    };
+    // Backward lengths: one sequential pass over the forward halves (a count per pair).
+    backLength_.assign(n, 0);
+    forEachBlock([&](std::int64_t b) {
+        const std::vector<Index>& buffer = blockIndices_[std::size_t(b)];
+        std::size_t position = 0;
+        const std::size_t end = std::min(n, std::size_t(b + 1) * rowBlock);
+        for (std::size_t k = std::size_t(b) * rowBlock; k < end; ++k)
+            for (const std::size_t stop = position + rowLength_[k]; position < stop; ++position)
+                ++backLength_[buffer[position]];
+    });
+    const std::size_t self = options_.includeSelf ? 1 : 0;
+    offsets.assign(n + 1, 0);
+    for (std::size_t k = 0; k < n; ++k)
+        offsets[std::size_t(order[k]) + 1] = backLength_[k] + self + rowLength_[k];
+    for (std::size_t i = 0; i < n; ++i) offsets[i + 1] += offsets[i];
+    indices.resize(offsets[n]);  // every index is written below
+    rowStart_.resize(n);
+    // Self and the forward halves, block by block (each row's own part: no two blocks write
+    // the same place).
+#pragma omp parallel for schedule(static) if (blocks > 1)
+    for (std::int64_t b = 0; b < blocks; ++b) {
+        const std::vector<Index>& buffer = blockIndices_[std::size_t(b)];
+        std::size_t position = 0;
+        const std::size_t end = std::min(n, std::size_t(b + 1) * rowBlock);
+        for (std::size_t k = std::size_t(b) * rowBlock; k < end; ++k) {
+            const std::size_t start = offsets[order[k]];
+            rowStart_[k] = start;
+            Index* out = indices.data() + start + backLength_[k];
+            if (self) *out++ = order[k];
+            for (const std::size_t stop = position + rowLength_[k]; position < stop; ++position)
+                *out++ = order[buffer[position]];
+        }
+    }
+    // The backward halves: sequential, in place order, so each row receives its l < k in order.
+    forEachBlock([&](std::int64_t b) {
+        const std::vector<Index>& buffer = blockIndices_[std::size_t(b)];
+        std::size_t position = 0;
+        const std::size_t end = std::min(n, std::size_t(b + 1) * rowBlock);
+        for (std::size_t k = std::size_t(b) * rowBlock; k < end; ++k) {
+            const Index particle = order[k];
+            for (const std::size_t stop = position + rowLength_[k]; position < stop; ++position)
+                indices[rowStart_[buffer[position]]++] = particle;
+        }
+    });
+}
+
+template <int Dim>
+NeighbourList NeighbourSearch<Dim>::list(NeighbourList reuse) {
     const std::vector<Index>& order = bins_.order();
     const std::size_t n = order.size();
     // With one radius for all the three criteria coincide; gather skips the look-up of r_j.
     const PairCriterion criterion = constantRadius_ ? PairCriterion::gather : options_.criterion;
     const bool periodic = domain_.anyPeriodic();
+    std::vector<std::size_t> offsets;
+    std::vector<Index> indices;
+    reuse.releaseStorage(offsets, indices);
+    // The half stencil needs a symmetric pair test (gather with variable radii is not) and rows
+    // of cells in place order (a periodic range wraps); sorted rows take the full stencil too.
+    const bool symmetric = criterion != PairCriterion::gather || constantRadius_;
+    if (options_.halfStencil && symmetric && !periodic && !options_.sortRows) {
+        switch (criterion) {
+            case PairCriterion::either:
+                fillBlocksHalf<PairCriterion::either>();
+                break;
+            case PairCriterion::both:
+                fillBlocksHalf<PairCriterion::both>();
+                break;
+            case PairCriterion::gather:
+                fillBlocksHalf<PairCriterion::gather>();
+                break;
+        }
+        assembleHalf(offsets, indices);
+        return NeighbourList(std::move(offsets), std::move(indices));
+    }
     switch (criterion) {
         case PairCriterion::either:
             periodic ? fillBlocks<PairCriterion::either, true>() : fillBlocks<PairCriterion::either, false>();
@@ -169,10 +321,11 @@ NeighbourList NeighbourSearch<Dim>::list() {
             break;
     }
 
-    std::vector<std::size_t> offsets(n + 1, 0);
+    offsets.assign(n + 1, 0);
     for (std::size_t k = 0; k < n; ++k) offsets[std::size_t(order[k]) + 1] = rowLength_[k];
     for (std::size_t i = 0; i < n; ++i) offsets[i + 1] += offsets[i];
-    std::vector<Index> indices(offsets[n]);
+    // Every index is written below: only a grown part is initialised by resize.
+    indices.resize(offsets[n]);
     const std::int64_t blocks = std::int64_t(blockIndices_.size());
 #pragma omp parallel for schedule(static) if (blocks > 1)
     for (std::int64_t b = 0; b < blocks; ++b) {

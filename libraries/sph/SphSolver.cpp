@@ -97,6 +97,11 @@ KeywordSchema SphSolver<Dim>::keywords() {
         .scalar("neighbourSkin", "-", "Verlet skin as a fraction of the initial median support radius")
         .atLeast(0)
         .orDefault(0.2)
+        .word("neighbourRebuild", {"checked", "skin"},
+              "when the Verlet list is rebuilt: checked (the particles that outran half the skin are "
+              "tested for new neighbours) or skin (once 2 D + G exceeds the skin; rebuilds at almost every "
+              "step of a strong shock)")
+        .orDefault("checked")
         .word("momentum", {"variational", "difference"},
               "momentum equation: variational (conservative) or difference (for comparison)")
         .orDefault("variational")
@@ -254,7 +259,12 @@ void SphSolver<Dim>::updateNeighbours() {
         std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
         const double median = sorted.empty() ? 1.0 : sorted[sorted.size() / 2];
         const double skin = neighbourSkin_ * median;
-        verlet_ = std::make_unique<VerletList<Dim>>(skin);
+        // Checked: the few particles that outrun the skin (a gas's free end, a strong shock's
+        // front) are tested instead of rebuilding the whole list at almost every step.
+        const bool checked = settings_.word("neighbourRebuild") == "checked";
+        verlet_ =
+            std::make_unique<VerletList<Dim>>(skin, NeighbourDomain<Dim>{}, NeighbourSearchOptions{},
+                                              checked ? VerletPolicy::checked : VerletPolicy::displacement);
     }
     // Particles appended or removed (preStep) invalidate the list; without ghosts nothing else
     // changes the version, with them the list is rebuilt each step anyway.

@@ -232,6 +232,74 @@ TYPED_TEST(NeighbourSearchDim, ListsAreBitIdenticalForAnyThreadCount) {
     omp_set_num_threads(threadsBefore);
 }
 
+// The half stencil (each pair tested from its lower place, rows assembled from the forward
+// halves) gives the full stencil's list entry for entry, in the same order: the solvers' sums
+// run over the rows in that order, so a different one would change their last bits.
+TYPED_TEST(NeighbourSearchDim, HalfStencilEqualsTheFullStencilInOrder) {
+    constexpr int Dim = TypeParam::value;
+    const std::size_t n = 1500;
+    struct Cloud {
+        std::vector<Vector<Dim>> x;
+        NeighbourDomain<Dim> domain;
+        double radius;
+    };
+    const std::vector<Cloud> clouds = {{randomCloud<Dim>(n, 41), {}, radiusFor<Dim>(n, 25)},
+                                       {clusteredCloud<Dim>(n, 42), {}, 0.01},
+                                       {randomCloud<Dim>(n, 43, -0.3, 1.3),
+                                        {Vector<Dim>::Zero(), Vector<Dim>::Ones()},
+                                        radiusFor<Dim>(n, 20)},
+                                       {latticeCloud<Dim>(Dim == 1   ? 1500
+                                                          : Dim == 2 ? 40
+                                                                     : 12,
+                                                          0.1),
+                                        {},
+                                        0.23}};
+    int halfBuilds = 0;
+    for (const Cloud& cloud : clouds) {
+        const auto r = variableRadii(cloud.x.size(), cloud.radius, 44);
+        for (PairCriterion criterion : allCriteria)
+            for (bool self : {false, true})
+                for (int cellsPerRadius : {1, 2, 3})
+                    for (bool constant : {false, true}) {
+                        SCOPED_TRACE(std::string(name(criterion)) + (self ? " with self" : "") +
+                                     " cellsPerRadius " + std::to_string(cellsPerRadius) +
+                                     (constant ? " constant" : " variable"));
+                        NeighbourSearchOptions options;
+                        options.criterion = criterion;
+                        options.includeSelf = self;
+                        options.cellsPerRadius = cellsPerRadius;
+                        NeighbourSearchOptions full = options;
+                        full.halfStencil = false;
+                        NeighbourSearch<Dim> a(cloud.domain, options), b(cloud.domain, full);
+                        const NeighbourList half =
+                            constant ? a.build(cloud.x, cloud.radius) : a.build(cloud.x, r);
+                        const NeighbourList whole =
+                            constant ? b.build(cloud.x, cloud.radius) : b.build(cloud.x, r);
+                        ASSERT_EQ(half, whole);
+                        halfBuilds += constant || criterion != PairCriterion::gather;
+                        EXPECT_GT(half.pairCount(), cloud.x.size());
+                    }
+    }
+    EXPECT_EQ(halfBuilds, 4 * 3 * 2 * 3 * 2 - 4 * 2 * 3);  // every build but variable-radius gather
+}
+
+// A list refilled into a previous list's memory is the list built afresh, whether that memory was
+// larger or smaller than needed.
+TYPED_TEST(NeighbourSearchDim, ListIntoPreviousStorageEqualsAFreshList) {
+    constexpr int Dim = TypeParam::value;
+    const std::size_t n = 1500;
+    const auto x = randomCloud<Dim>(n, 45);
+    NeighbourSearch<Dim> search;
+    const NeighbourList small = search.build(x, radiusFor<Dim>(n, 10));
+    const NeighbourList large = search.build(x, radiusFor<Dim>(n, 40));
+    NeighbourList previous = large;
+    search.bin(x, radiusFor<Dim>(n, 10));
+    previous = search.list(std::move(previous));
+    EXPECT_EQ(previous, small);
+    search.bin(x, radiusFor<Dim>(n, 40));
+    EXPECT_EQ(search.list(std::move(previous)), large);
+}
+
 TYPED_TEST(NeighbourSearchDim, EmptyAndSingleParticle) {
     constexpr int Dim = TypeParam::value;
     NeighbourSearch<Dim> search;
