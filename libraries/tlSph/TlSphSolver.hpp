@@ -126,8 +126,8 @@ private:
     // conditions active at essentialTime_.
     std::unique_ptr<LagrangeMultiplierProjection<Dim>> essential_;
     double essentialTime_ = 0;
-    // Particles whose motion every active condition prescribes in all directions (fixed,
-    // prescribedVelocity): their J follows their F (no D(J)), as of kinematicTime_.
+    // The particles of the active fixed conditions (the clamp): their J follows their F (no
+    // D(J)), as of kinematicTime_ (updateKinematic: why).
     std::vector<char> kinematic_;
     bool kinematicBuilt_ = false;
     // The operators of D(J) on the body without those particles (real and ghost, free[s] their
