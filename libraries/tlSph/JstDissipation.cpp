@@ -8,7 +8,11 @@
 // equation's u_xxxx coefficient -(eps4 - maxCo^3/8) c h^3, maxCo the paper's alpha_CFL); the
 // model warns below it. c_p is the largest p-wave speed, h the particle spacing, L the corrected
 // Laplacian (TlDissipation.hpp); per particle a, with k2 = eps2 c_p h and k4 = eps4 c_p h^3:
-//     D(p)_a = k2_p L[p]_a - k4_p L^2[p]_a,   D(J)_a = k2_J L[J]_a - k4_J L^2[J]_a.
+//     D(p)_a = k2_p L[p]_a - k4_p L^2[p]_a,   D(J)_a = k2_J L[J]_a - k4_J L*[L[J]]_a,
+// with L* the V-adjoint of L (sum_a V_a W_a L[U]_a = sum_a V_a U_a L*[W]_a), so that
+// sum V J D4(J) = -k4 sum V L[J]^2 <= 0: the J term only dissipates (with the law's pressure
+// taken at J, the energy kappa/2 (J - 1)^2), and its volume mean is zero. The solver computes it
+// on the body without the clamped (fixed) particles, whose J stays det F (issue 16).
 #include "tlSph/JstDissipation.hpp"
 
 #include "core/Parallel.hpp"

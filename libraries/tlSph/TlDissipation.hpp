@@ -51,7 +51,8 @@ public:
         const double* lapP = nullptr;    // L[p]
         const double* lap2P = nullptr;   // L^2[p]
         const double* lapJ = nullptr;    // L[J]
-        const double* lap2J = nullptr;   // L^2[J]
+        const double* lap2J = nullptr;   // L*[L[J]]: L* the V-adjoint of L (dissipative), on the
+                                         // body without its clamped particles (TlSphSolver)
         double* dissipationP = nullptr;  // D(p), written when actsOnMomentum()
         double* dissipationJ = nullptr;  // D(J), written when actsOnJacobian() and J is evolved
     };
