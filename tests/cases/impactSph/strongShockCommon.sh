@@ -7,6 +7,11 @@
 strongCase() {
     local c
     c=$(newCase "$SOURCE/strongShockTube" "$1")
+    # The tests measure the defaults: the case's densityLimiter (written for its studyDict) goes.
+    sed -i 's/dissipation     { type riemann; densityLimiter contact; }/dissipation     { type riemann; }/' \
+        "$c/constant/sphProperties"
+    grep -q '^dissipation     { type riemann; }' "$c/constant/sphProperties" ||
+        fail "$c/constant/sphProperties: expected 'dissipation { type riemann; densityLimiter contact; }'"
     local pR
     pR=$(awk -v r="$2" 'BEGIN { printf "%.17g", 1 / r }')
     setEntry "$c/system/particleGenDict" regions/right/fields/pressure "$pR"
