@@ -1,5 +1,6 @@
 #include "particles/NeighbourSearch.hpp"
 
+#include <omp.h>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -209,6 +210,7 @@ void NeighbourSearch<Dim>::fillBlocksHalf() {
     const std::size_t n = bins_.size();
     const std::int64_t blocks = std::int64_t((n + rowBlock - 1) / rowBlock);
     blockIndices_.resize(std::size_t(blocks));
+    blockMaxTarget_.resize(std::size_t(blocks));
     rowLength_.resize(n);
 #pragma omp parallel for schedule(dynamic) if (blocks > 1)
     for (std::int64_t b = 0; b < blocks; ++b) {
@@ -221,6 +223,10 @@ void NeighbourSearch<Dim>::fillBlocksHalf() {
             used = gatherForward<C>(k, buffer, used, runs);
             rowLength_[k] = Index(used - start);
         }
+        // The farthest place this block's forward halves reach (0 for none): assembleHalf's
+        // chunks skip the blocks that cannot reach them.
+        blockMaxTarget_[std::size_t(b)] =
+            used > 0 ? *std::max_element(buffer.begin(), buffer.begin() + used) : 0;
     }
 }
 
@@ -232,19 +238,32 @@ void NeighbourSearch<Dim>::assembleHalf(std::vector<std::size_t>& offsets, std::
     const std::vector<Index>& order = bins_.order();
     const std::size_t n = order.size();
     const std::int64_t blocks = std::int64_t(blockIndices_.size());
-    auto forEachBlock = [&](auto&& f) {
-        for (std::int64_t b = 0; b < blocks; ++b) f(b);
+    // The backward halves are gathered by chunks of target places, one task each: a chunk reads
+    // the forward halves of the blocks that reach into it (blockMaxTarget_), in place order, and
+    // keeps the pairs whose target is its own. Each row then receives its l < k in the order of
+    // l whatever the number of threads; the forward halves reach only a few layers of cells
+    // ahead, so a chunk reads little more than its own share.
+    const std::int64_t chunks =
+        std::max<std::int64_t>(1, std::min<std::int64_t>(blocks, omp_get_max_threads()));
+    auto forEachPairInto = [&](std::int64_t chunk, auto&& f) {
+        const std::size_t lo = n * std::size_t(chunk) / std::size_t(chunks);
+        const std::size_t hi = n * std::size_t(chunk + 1) / std::size_t(chunks);
+        for (std::int64_t b = 0; b < blocks && std::size_t(b) * rowBlock < hi; ++b) {
+            if (blockMaxTarget_[std::size_t(b)] < lo) continue;
+            const std::vector<Index>& buffer = blockIndices_[std::size_t(b)];
+            std::size_t position = 0;
+            const std::size_t end = std::min(hi, std::min(n, std::size_t(b + 1) * rowBlock));
+            for (std::size_t k = std::size_t(b) * rowBlock; k < end; ++k)
+                for (const std::size_t stop = position + rowLength_[k]; position < stop; ++position) {
+                    const std::size_t l = buffer[position];
+                    if (l >= lo && l < hi) f(k, l);
+                }
+        }
     };
-    // Backward lengths: one sequential pass over the forward halves (a count per pair).
     backLength_.assign(n, 0);
-    forEachBlock([&](std::int64_t b) {
-        const std::vector<Index>& buffer = blockIndices_[std::size_t(b)];
-        std::size_t position = 0;
-        const std::size_t end = std::min(n, std::size_t(b + 1) * rowBlock);
-        for (std::size_t k = std::size_t(b) * rowBlock; k < end; ++k)
-            for (const std::size_t stop = position + rowLength_[k]; position < stop; ++position)
-                ++backLength_[buffer[position]];
-    });
+#pragma omp parallel for schedule(static) if (chunks > 1)
+    for (std::int64_t c = 0; c < chunks; ++c)
+        forEachPairInto(c, [&](std::size_t, std::size_t l) { ++backLength_[l]; });
     const std::size_t self = options_.includeSelf ? 1 : 0;
     offsets.assign(n + 1, 0);
     for (std::size_t k = 0; k < n; ++k)
@@ -268,17 +287,9 @@ void NeighbourSearch<Dim>::assembleHalf(std::vector<std::size_t>& offsets, std::
                 *out++ = order[buffer[position]];
         }
     }
-    // The backward halves: sequential, in place order, so each row receives its l < k in order.
-    forEachBlock([&](std::int64_t b) {
-        const std::vector<Index>& buffer = blockIndices_[std::size_t(b)];
-        std::size_t position = 0;
-        const std::size_t end = std::min(n, std::size_t(b + 1) * rowBlock);
-        for (std::size_t k = std::size_t(b) * rowBlock; k < end; ++k) {
-            const Index particle = order[k];
-            for (const std::size_t stop = position + rowLength_[k]; position < stop; ++position)
-                indices[rowStart_[buffer[position]]++] = particle;
-        }
-    });
+#pragma omp parallel for schedule(static) if (chunks > 1)
+    for (std::int64_t c = 0; c < chunks; ++c)
+        forEachPairInto(c, [&](std::size_t k, std::size_t l) { indices[rowStart_[l]++] = order[k]; });
 }
 
 template <int Dim>

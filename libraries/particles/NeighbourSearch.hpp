@@ -146,7 +146,7 @@ private:
     std::vector<std::vector<Index>> blockIndices_;
     std::vector<Index> rowLength_;
     // The half stencil's backward lengths and the rows' write positions.
-    std::vector<Index> backLength_;
+    std::vector<Index> backLength_, blockMaxTarget_;
     std::vector<std::size_t> rowStart_;
 };
 
