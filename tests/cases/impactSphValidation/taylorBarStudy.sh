@@ -10,8 +10,8 @@
 #   cracks, a gap round the rim of the wall layer wider than the kernel's support (2h = 2.6 s)
 #   at every lattice (rimGaps.py; a continuous rim has gaps of one spacing). A footprint that
 #   neither converges onto 7.0 mm nor shows the cracks fails: then the README's explanation is
-#   wrong. Measured (README, 87158dc): lengths 21.93, 21.72, 21.61 mm (order 2.3, extrapolated
-#   21.40 mm); footprints 7.84, 8.34, 8.61 mm (order 1.9, extrapolated 9.24 mm, +32%); rim gaps
+#   wrong. Measured (README, 87158dc): lengths 21.93, 21.72, 21.61 mm (order 2.36, extrapolated
+#   21.41 mm); footprints 7.84, 8.34, 8.61 mm (order 1.97, extrapolated 9.23 mm, +32%); rim gaps
 #   6.9, 7.1, 5.7 s.
 # About 9 CPU-minutes on one thread (4212, 7979 and 13552 particles: 67, 159 and 294 s).
 . "$(dirname "$0")/../impactSph/common.sh"
