@@ -17,5 +17,7 @@ check tlSph/swingingCube 12 "lagrangeMultiplier_formulation-pFJ_h0.03125" "latti
     "essentialBoundaryConditions lagrangeMultiplier"
 check tlSph/cable 3 "lattice/points (151 4 4)" "lattice/points (201 5 5)"
 check tlSph/twistingColumn 5 "lattice/points (4 19 4)" "lattice/points (13 73 13)"
+check tlSph/oscillatingPlate 6 "pFJ_h0.0015385" "lattice/spacing 0.0015385" \
+    "constant/tlSphProperties/dissipation/jacobian (0 0.125)"
 check impactSph/isothermalShockBar 4 "regions/insert/lattice/spacing 0.00125" "system/controlDict/deltaT 2.5e-05"
 pass "the shipped studies of the swinging cube, cable, twisting column and isothermal shock-bar are valid"
