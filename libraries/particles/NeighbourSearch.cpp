@@ -16,6 +16,18 @@ constexpr std::size_t rowBlock = 1024;
 
 static_assert(std::is_same_v<NeighbourList::Index, CellBins<3>::Index>);
 
+// The pair test of a criterion on the squared distance and the two squared support radii: one
+// expression for the full and the half stencil, so a pair passes from either side alike.
+template <PairCriterion C>
+inline bool withinSupport(double d2, double ri2, double rj2) {
+    if constexpr (C == PairCriterion::either)
+        return d2 < std::max(ri2, rj2);
+    else if constexpr (C == PairCriterion::both)
+        return d2 < std::min(ri2, rj2);
+    else
+        return d2 < ri2;
+}
+
 }  // namespace
 
 template <int Dim>
@@ -118,13 +130,7 @@ std::size_t NeighbourSearch<Dim>::gatherRow(std::size_t k, std::vector<Index>& b
             else
                 dx = xi - sortedPosition[l];
             const double d2 = dx.squaredNorm();
-            bool in;
-            if constexpr (C == PairCriterion::either)
-                in = d2 < std::max(ri2, radius2[l]);
-            else if constexpr (C == PairCriterion::both)
-                in = d2 < std::min(ri2, radius2[l]);
-            else
-                in = d2 < ri2;
+            bool in = withinSupport<C>(d2, ri2, radius2[l]);
             in = l == k ? includeSelf : in;
             row[found] = order[l];
             found += in;
@@ -190,13 +196,7 @@ std::size_t NeighbourSearch<Dim>::gatherForward(std::size_t k, std::vector<Index
             // norm bit for bit, so the pair passes here exactly when it passes from either side.
             const Vector<Dim> dx = xi - sortedPosition[l];
             const double d2 = dx.squaredNorm();
-            bool in;
-            if constexpr (C == PairCriterion::either)
-                in = d2 < std::max(ri2, radius2[l]);
-            else if constexpr (C == PairCriterion::both)
-                in = d2 < std::min(ri2, radius2[l]);
-            else
-                in = d2 < ri2;
+            const bool in = withinSupport<C>(d2, ri2, radius2[l]);
             row[found] = Index(l);  // a place: the rows are assembled from places in list()
             found += in;
         }
