@@ -11,6 +11,16 @@ copyTutorial() {
     cp -r "$SOURCE/tutorials/tlSph/$1" "$2"
     rm -rf "$2"/log.* "$2"/postProcessing "$2"/[0-9]* "$2"/*.png "$2"/particles.pvd
 }
+# coarsePlate <destination>: the oscillating plate's tutorial on the 4 mm lattice with h = 1.3 dx
+# (6 particles through the thickness: the cheap plate of the amplitude, {p,F,J} and energy tests),
+# whatever spacing and h the tutorial ships with.
+coarsePlate() {
+    copyTutorial oscillatingPlate "$1"
+    sed -i 's/spacing [0-9.e-]*; }/spacing 0.004; }/' "$1/system/particleGenDict"
+    sed -i 's/^smoothingLengthRatio .*/smoothingLengthRatio 1.3;/' "$1/constant/tlSphProperties"
+    grep -q "spacing 0.004; }" "$1/system/particleGenDict" || fail "could not set dx = 4 mm"
+    grep -q "^smoothingLengthRatio 1.3;" "$1/constant/tlSphProperties" || fail "could not set h = 1.3 dx"
+}
 # run <case> <application>: runs it with its log in the case.
 run() {
     "$2" -case "$1" > "$1/log.$2" 2>&1 || fail "$2 on $1: $(tail -n 20 "$1/log.$2")"

@@ -7,10 +7,7 @@
 # judged written and finite (not a NaN state that the solver's own check would catch later).
 source "$(dirname "$0")/common.sh"
 c="$WORK/plate"
-copyTutorial oscillatingPlate "$c"
-sed -i 's/spacing [0-9.e-]*; }/spacing 0.004; }/' "$c/system/particleGenDict"
-grep -q "spacing 0.004; }" "$c/system/particleGenDict" || fail "could not set dx = 4 mm"
-sed -i 's/^smoothingLengthRatio .*/smoothingLengthRatio 1.3;/' "$c/constant/tlSphProperties"
+coarsePlate "$c"
 sed -i 's/^maxCo .*/maxCo           1;/; s/^endTime .*/endTime         0.3;/' "$c/system/controlDict"
 sed -i 's/type conservedQuantities; writeControl timeStep; writeInterval 200;/type conservedQuantities; writeControl timeStep; writeInterval 5; maxEnergyGrowth 10;/' \
     "$c/system/controlDict"

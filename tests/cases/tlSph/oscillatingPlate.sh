@@ -27,11 +27,7 @@ period=$(awk -v h="$half" 'BEGIN { printf "%.6f\n", 2 * h }')
 awk -v T="$period" 'BEGIN { d = T / 0.254 - 1; exit !(d < 0.03 && d > -0.03) }' || fail "period $period s, not within 3% of 0.254 s"
 
 c="$WORK/coarse"
-copyTutorial oscillatingPlate "$c"
-sed -i 's/spacing 0.0015385; }/spacing 0.004; }/' "$c/system/particleGenDict"
-sed -i 's/^smoothingLengthRatio 1.1;/smoothingLengthRatio 1.3;/' "$c/constant/tlSphProperties"
-grep -q "spacing 0.004; }" "$c/system/particleGenDict" || fail "could not set the coarse lattice"
-grep -q "^smoothingLengthRatio 1.3;" "$c/constant/tlSphProperties" || fail "could not set h = 1.3 dx"
+coarsePlate "$c"
 sed -i 's/^endTime .*/endTime         3.0;/' "$c/system/controlDict"
 particleGen -case "$c" > "$c/log.particleGen" 2>&1 || fail "particleGen: $(tail "$c/log.particleGen")"
 run "$c" tlSph

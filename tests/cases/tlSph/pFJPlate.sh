@@ -9,11 +9,8 @@
 # clamped particles deep in the clamp keep J = det F = 1.
 source "$(dirname "$0")/common.sh"
 c="$WORK/plate"
-copyTutorial oscillatingPlate "$c"
-sed -i 's/spacing [0-9.e-]*; }/spacing 0.004; }/' "$c/system/particleGenDict"
-grep -q "spacing 0.004; }" "$c/system/particleGenDict" || fail "could not set dx = 4 mm"
+coarsePlate "$c"
 sed -i 's/^formulation .*/formulation          pFJ;/; s/momentum (0 0.125);\( jacobian (0 0);\)\? }/momentum (0 0.125); jacobian (0 0.125); }/' "$c/constant/tlSphProperties"
-sed -i 's/^smoothingLengthRatio .*/smoothingLengthRatio 1.3;/' "$c/constant/tlSphProperties"
 grep -q "jacobian (0 0.125)" "$c/constant/tlSphProperties" || fail "could not set the J dissipation"
 sed -i 's/poissonRatio    0.3975;/poissonRatio    0.45;/' "$c/constant/materialProperties"
 grep -q "poissonRatio    0.45;" "$c/constant/materialProperties" || fail "could not set nu"
