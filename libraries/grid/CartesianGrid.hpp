@@ -15,6 +15,7 @@
 //     grid { box { min (0 0 0); max (1 1 1); } cellSize 0.05; }  // cells = round(length / size),
 //                                                                 // size then adjusted to fit the box
 #include "core/Dictionary.hpp"
+#include "core/KeywordSchema.hpp"
 #include "core/Tensor.hpp"
 #include "particles/FieldStore.hpp"
 
@@ -34,6 +35,10 @@ public:
     CartesianGrid(const Vector<Dim>& origin, const Vector<Dim>& cellSize, const Ijk& cells);
     // From a dictionary of either form above; InputError at the entry's line for bad input.
     static CartesianGrid fromDictionary(const Dictionary& dict);
+    // The keywords of both forms (origin, cellSize, cells, box), for a method's schema
+    // (`.dictionary("grid", ...).nested(&CartesianGrid<Dim>::keywords)`) and mfDoc; which
+    // combinations go together is checked by fromDictionary.
+    static KeywordSchema keywords();
 
     const Vector<Dim>& origin() const { return origin_; }
     const Vector<Dim>& cellSize() const { return cellSize_; }

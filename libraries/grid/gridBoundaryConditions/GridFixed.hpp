@@ -1,0 +1,20 @@
+#pragma once
+// `fixed`: the selected nodes do not move, v = a = 0 (a clamped edge, the anchor of a hanging
+// block).
+#include "grid/gridBoundaryConditions/GridBoundaryCondition.hpp"
+
+namespace mfdyn {
+
+template <int Dim>
+class GridFixed : public GridBoundaryCondition<Dim> {
+public:
+    GridFixed(const Dictionary& dict, const CartesianGrid<Dim>& grid);
+    static KeywordSchema keywords();
+    void apply(const CartesianGrid<Dim>& grid, std::vector<Vector<Dim>>& velocity,
+               std::vector<Vector<Dim>>* acceleration, double t, double dt) const override;
+
+private:
+    GridFixed(const KeywordValues& values, const CartesianGrid<Dim>& grid);
+};
+
+}  // namespace mfdyn
