@@ -26,6 +26,8 @@ const std::map<std::string, std::vector<Entry>>& samples() {
     static const std::map<std::string, std::vector<Entry>> s{
         {"linearElastic", {{"rho0", "7000"}, {"youngsModulus", "21e9"}, {"poissonRatio", "0.3"}}},
         {"neoHookean", {{"rho0", "1100"}, {"youngsModulus", "17e6"}, {"poissonRatio", "0.45"}}},
+        {"stVenantKirchhoff", {{"rho0", "1500"}, {"youngsModulus", "1e5"}, {"poissonRatio", "0"}}},
+        {"neoHookeanLogJ", {{"rho0", "1500"}, {"youngsModulus", "1e5"}, {"poissonRatio", "0.3"}}},
         {"mooneyRivlin",
          {{"rho0", "1100"}, {"youngsModulus", "17e6"}, {"poissonRatio", "0.495"}, {"zeta", "2e6", true}}},
         {"j2Plasticity",

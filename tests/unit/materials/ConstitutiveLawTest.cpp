@@ -96,6 +96,8 @@ std::vector<Sample> hyperelastic() {
     return {
         {"linearElastic", rubber, "type linearElastic;", false},
         {"neoHookean", rubber, "type neoHookean;"},
+        {"stVenantKirchhoff", rubber, "type stVenantKirchhoff;"},
+        {"neoHookeanLogJ", rubber, "type neoHookeanLogJ;"},
         {"mooneyRivlin", rubber, "type mooneyRivlin; zeta 2e6;"},
         {"mooneyRivlinHDominated", rubber, "type mooneyRivlin; hDominated yes;"},
         {"mooneyRivlinOwnConstants", "rho0 1100;", "type mooneyRivlin; zeta 1.5e6; xi 0.4e6; kappa 5e7;"},
