@@ -21,7 +21,8 @@
 //   acceleration  (may be null) the nodes' rate a_I = (v_I^{n+1} - v_I^n)/dt [m/s^2], which a
 //                 FLIP update interpolates to the particles' velocity.
 //
-// A component a condition fixes to a value is set in both: fixed v = a = 0, slip the wall-normal
+// A component a condition fixes to a value is set in both: fixed v = a = 0 (all components, or
+// those of `components (y)`: the thesis's spring fixes only v_y), slip the wall-normal
 // components of both zero, prescribedVelocity v_i = v_i(t) and a_i = dv_i/dt(t) (so fixed is
 // prescribedVelocity (0 0 0)), with t the time v belongs to (t^{n+1}). friction removes the
 // normal components as slip does and decelerates the tangential velocity by mu times the
@@ -54,7 +55,8 @@ public:
     static constexpr const char* familyName = "gridBoundaryCondition";
     using Selector = Registry<GridBoundaryCondition, const Dictionary&, const CartesianGrid<Dim>&>;
     using Index = typename CartesianGrid<Dim>::Index;
-    static std::unique_ptr<GridBoundaryCondition> New(const Dictionary& dict, const CartesianGrid<Dim>& grid) {
+    static std::unique_ptr<GridBoundaryCondition> New(const Dictionary& dict,
+                                                      const CartesianGrid<Dim>& grid) {
         return Selector::New(dict, grid);
     }
 
@@ -99,6 +101,14 @@ private:
 
 // The `normal` keyword of slip and friction (optional; the faces' normals when omitted).
 KeywordSchema wallNormalKeywords();
+
+// `components (x y)`: which velocity components a condition sets (fixed, prescribedVelocity),
+// optional, default all. readComponents gives one flag per axis; InputError at the entry for a
+// name that is not an axis of the `dim`-dimensional grid, listing the valid ones.
+KeywordSchema componentKeywords();
+std::vector<bool> readComponents(const KeywordValues& values, int dim);
+// "components (x z)", or "" when all are set.
+std::string componentsText(const std::vector<bool>& set);
 
 // The conditions of one `gridBoundaryConditions { name { type ...; } ... }` dictionary, in the
 // order written; an empty list when `dict` is null (no conditions: every node free).

@@ -33,9 +33,9 @@ public:
 
 private:
     GridPrescribedVelocity(const KeywordValues& values, const CartesianGrid<Dim>& grid);
-    std::vector<double> times_;          // one entry for a constant
+    std::vector<double> times_;  // one entry for a constant
     std::vector<Vector<Dim>> values_;
-    std::array<bool, Dim> prescribed_{};
+    std::vector<bool> prescribed_;  // per axis
 };
 
 }  // namespace mfdyn
