@@ -3,6 +3,7 @@
 //     lattice { type cubic; spacing 0.01; }
 //     lattice { type hexagonal; spacing 0.01; jitter 0.1; seed 42; }
 //     lattice { type nodal; points (21 11 3); }
+//     lattice { type materialPoints; cells (10 10); pattern gauss; }   (MPM: V_p = exact volume / N)
 // A lattice fills a bounding box with points, each carrying the volume it represents: the same
 // pointVolume() for every point of cubic, hexagonal and hcp; per point (pointVolumes) for nodal,
 // whose points on the box's faces stand for half a cell or less.
@@ -45,6 +46,11 @@ public:
     // pointVolume() for every point; the nodal lattice gives its boundary points their
     // tributary (dual-cell) volumes.
     virtual std::vector<double> pointVolumes(const BoundingBox& box, const std::vector<double>& points) const;
+    // True for a lattice whose points share the shape's exact volume equally (materialPoints:
+    // V_p = exact volume / N, the material point method's rule); particleGen then replaces
+    // pointVolumes() by that share when the shape has a closed-form volume, and keeps them (with
+    // a log line) when it has none.
+    virtual bool volumeFromShape() const { return false; }
     // How many points points(box) returns, counted in floating point without allocating, so that
     // a spacing far too small for the box gives a huge number (particleGen refuses it before
     // generating) rather than an overflowed integer.

@@ -521,6 +521,28 @@ std::unique_ptr<ParticleSetBase> ParticleGenerator::build() {
         if (rep.count == 0)
             throw r.error("shape", "region '" + entry->key + "' is empty: no lattice point of spacing " +
                                        formatNumber(lattice->spacing()) + " m falls inside its shape");
+        // Material points (materialPoints lattice): V_p = the shape's exact volume / N, the
+        // material point method's rule (doc/methods/mpm.md section 3), so that the body's mass is
+        // density x its exact volume; without a closed-form volume the lattice's volumes stay.
+        if (lattice->volumeFromShape()) {
+            if (exact) {
+                const double share = *exact / double(rep.count), mass = density * share;
+                if (!normalPositive(share) || !normalPositive(mass))
+                    throw r.error("lattice", "region '" + entry->key +
+                                                 "': the particle mass density x volume = " +
+                                                 formatNumber(density) + " x " + formatNumber(share) +
+                                                 " is not a positive normal number (underflow or overflow)");
+                for (std::size_t p = all.size() - rep.count; p < all.size(); ++p) all[p].mass = mass;
+                rep.volume = *exact;
+                rep.mass = mass * double(rep.count);
+            } else {
+                Log::info(r.where().str() + ": region '" + entry->key + "': its " +
+                          r.subDict("shape").getOrDefault<std::string>("type", "?") +
+                          " shape has no closed-form volume, so its material points keep the lattice volume "
+                          "(sub-cell volume / points per sub-cell): " +
+                          formatNumber(rep.volume) + " in all");
+            }
+        }
         report_.push_back(rep);
         data.push_back(std::move(region));
     }

@@ -9,6 +9,7 @@
 //             shape   { type box; min (0 0); max (0.01 0.01); }
 //             lattice { type cubic; spacing 1e-3; }
 //             density 2700;                   // kg/m^3: mass = density × the point's lattice volume
+//                                             // (materialPoints: × the shape's exact volume / N)
 //             fields  { velocity (0 -100); }  // uniform initial values (known fields below)
 //             override yes;                   // take over earlier regions' particles in this shape (default)
 //             mass    uniformSpacing;         // or equalMass (below); default uniformSpacing

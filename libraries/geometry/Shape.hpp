@@ -2,7 +2,7 @@
 // A region of space that particles are generated in, selected by name:
 //     shape { type box; min (0 0 0); max (1 1 1); }
 // Shapes work in the case's dimension (1, 2 or 3); points have that many components.
-// Types: box, sphere, cylinder (2D/3D), stlSurface (3D), and union, intersection and difference
+// Types: box, sphere, cylinder (2D/3D), polygon (2D), stlSurface (3D), and union, intersection and difference
 // of a list of shapes (CsgShape.hpp); `particleGen -listModels` prints them with their libraries.
 #include "core/Registry.hpp"
 

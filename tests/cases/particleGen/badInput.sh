@@ -51,6 +51,10 @@ refuse "max must exceed min" \
     "dimension 2; regions { a { shape { type box; min (0 0); max (0.1 -0.1); } lattice { type cubic; spacing 0.01; } density 1000; } }"
 refuse "keyword 'spacing'" \
     "dimension 2; regions { a { $box lattice { type cubic; spacing -0.01; } density 1000; } }"
+refuse "exactly one of \`cells (n1 n2 n3);\`" \
+    "dimension 2; regions { a { $box lattice { type materialPoints; cells (10 10); spacing 0.01; } density 1000; } }"
+refuse "the polygon must be simple" \
+    "dimension 2; regions { a { shape { type polygon; vertices ((0 0) (1 1) (1 0) (0 1)); } lattice { type materialPoints; cells (10 10); } density 1000; } }"
 
 # A lattice much coarser than its shape still works, with a warning that the mass is off.
 printf '%s\n' "dimension 2; regions { a { shape { type sphere; centre (0 0); radius 0.01; } lattice { type cubic; spacing 0.012; } density 1000; } }" \
@@ -58,4 +62,4 @@ printf '%s\n' "dimension 2; regions { a { shape { type sphere; centre (0 0); rad
 particleGen -case "$WORK/case" > "$WORK/log" 2>&1 || fail "coarse lattice refused: $(cat "$WORK/log")"
 grep -q "Warning: .*particleGenDict:1:24: region 'a': its particles stand for a volume of 0.000432 but its shape's is 0.000314159" \
     "$WORK/log" || fail "no coarse-lattice warning: $(cat "$WORK/log")"
-echo "PASS: 10 bad particleGenDicts refused at file:line, earlier results kept; coarse lattice warned"
+echo "PASS: 12 bad particleGenDicts refused at file:line, earlier results kept; coarse lattice warned"

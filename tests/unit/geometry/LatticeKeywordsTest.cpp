@@ -7,6 +7,7 @@
 #include "geometry/CubicLattice.hpp"
 #include "geometry/HcpLattice.hpp"
 #include "geometry/HexagonalLattice.hpp"
+#include "geometry/MaterialPointLattice.hpp"
 #include "geometry/NodalLattice.hpp"
 
 #include "../SchemaTestTools.hpp"
@@ -27,12 +28,13 @@ std::string errorOf(const std::string& text, int dimension) {
 
 TEST(LatticeKeywords, EveryTypeDeclaresSpacingJitterAndSeed) {
     const auto schemas = {CubicLattice::keywords(), HexagonalLattice::keywords(), HcpLattice::keywords(),
-                          NodalLattice::keywords()};
+                          NodalLattice::keywords(), MaterialPointLattice::keywords()};
     test::expectRegisteredSchemas(Lattice::familyName, schemas, "libraries/geometry/");
     for (const KeywordSchema& schema : schemas) {
         for (const char* name : {"spacing", "jitter", "seed"}) ASSERT_NE(schema.find(name), nullptr) << name;
         EXPECT_EQ(schema.find("spacing")->kind,
-                  schema.type() == "nodal" ? Keyword::Kind::optional : Keyword::Kind::required);
+                  schema.type() == "nodal" || schema.type() == "materialPoints" ? Keyword::Kind::optional
+                                                                                 : Keyword::Kind::required);
         EXPECT_EQ(schema.find("jitter")->defaultValue, "0");
         EXPECT_EQ(schema.find("seed")->defaultValue, "1");
     }
