@@ -1,5 +1,5 @@
-// The linear hat of the MPM thesis (seed 002, section 7.3, Eqs. 63-67; doc/methods/mpm.md section
-// 2.2), per axis in cell units r = (x - x_I)/h:
+// The linear hat of the MPM thesis (its section 7.3, Eqs. 63-67, as in doc/methods/mpm.md §2.2),
+// per axis in cell units r = (x - x_I)/h:
 //
 //     N(r) = 1 - |r|  for |r| < 1,  0 beyond;     dN/dr = -sign(r)
 //

@@ -21,8 +21,8 @@
 // node has S_-1 = (lp - xi)^2/(4 lp), and the fold gives
 //     node 0: 1 - (xi^2 + lp^2)/(2 lp) + 2 (lp - xi)^2/(4 lp) = 1 - xi
 //     node 1: (lp + xi)^2/(4 lp) - (lp - xi)^2/(4 lp)         = xi
-// the linear hat: the part of the box outside the grid is mirrored in, non-negative, and the
-// partition of unity and linear completeness hold up to the edge.
+// the linear hat: in the last l_p before the edge uGIMP becomes the hat of a point particle,
+// non-negative, with the partition of unity and linear completeness up to the edge.
 #include "grid/shapeFunctions/UGimpShapeFunction.hpp"
 
 namespace mfdyn {

@@ -1,4 +1,4 @@
-// The family contract of `shapeFunction` (issue 17 item 2; doc/methods/mpm.md section 8, test
+// The family contract of `shapeFunction` (issue 17 item 2; doc/methods/mpm.md section 5, test
 // U1), over every registered type (the registry is iterated, so a new type is covered without
 // touching this file) in 1, 2 and 3D, at random points inside the grid with a third of the
 // coordinates in the edge cells and a third exactly on nodes, cell faces or half-cells:
@@ -263,7 +263,7 @@ TEST(ShapeFunctionContract, everyTypeIn3D) {
     checkEveryType<3>();
 }
 
-// What the contract is for: U2 of doc/methods/mpm.md section 8 in miniature. A mass and momentum
+// What the contract is for: U2 of doc/methods/mpm.md section 5 in miniature. A mass and momentum
 // spread with N and gathered back sum to the particle's, and sum grad N = 0 makes the internal
 // forces f_I = -sum_p V_p sigma_p grad N_Ip sum to zero for any stresses.
 template <int Dim>
