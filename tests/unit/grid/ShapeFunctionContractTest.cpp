@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <cstdio>
 #include <map>
 #include <random>
 #include <set>
@@ -124,6 +125,7 @@ void checkContract(const std::string& type) {
         }
     }
 
+    double worstDifference = 0.0, worstComplexStep = 0.0;  // printed: the figures behind the tolerances
     for (std::size_t p = 0; p < n; ++p) {
         SCOPED_TRACE("particle " + std::to_string(p));
         ASSERT_EQ(list.count[p], stride);
@@ -198,6 +200,7 @@ void checkContract(const std::string& type) {
                 best = std::min(best, worst);
             }
             EXPECT_LE(best, fdTolerance) << "axis " << a << ": grad N differs from every finite difference";
+            worstDifference = std::max(worstDifference, best);
         }
 
         // The complex step per axis, and evaluate() equal to the tensor product of the axes.
@@ -216,6 +219,7 @@ void checkContract(const std::string& type) {
             for (int k = 0; k < width; ++k) {
                 // Im N(xi + i e)/e is exact to rounding: no difference of nearby values is taken.
                 EXPECT_NEAR(Nc[k].imag() / e, dN[k].real(), 1e-12) << "axis " << a << " node " << k;
+                worstComplexStep = std::max(worstComplexStep, std::abs(Nc[k].imag() / e - dN[k].real()));
                 w[a].push_back(N[k].real());
                 dw[a].push_back(dN[k].real() / grid.cellSize(a));
             }
@@ -242,6 +246,8 @@ void checkContract(const std::string& type) {
                 EXPECT_NEAR(list.gradient[e][b] * grid.cellSize(b), gradient[b] * grid.cellSize(b), 1e-14);
         }
     }
+    std::printf("%-16s %dD: largest |grad N - finite difference| h = %.1e, |dN/dxi - complex step| = %.1e\n",
+                type.c_str(), Dim, worstDifference, worstComplexStep);
 }
 
 template <int Dim>
