@@ -148,7 +148,7 @@ void SolverRun::prepareOutputs() {
     bool listsStart = false;
     for (const auto& e : pvd_->entries()) {
         if (e.time > time_->value() || inLater(e.file)) continue;
-        pvd.add(e.time, e.file);
+        pvd.add(e.time, e.file, e.part);
         listsStart = listsStart || e.file == startTimeName_ + "/" + particleFileName;
     }
     if (!listsStart) pvd.add(time_->value(), startTimeName_ + "/" + particleFileName);
@@ -158,7 +158,7 @@ void SolverRun::prepareOutputs() {
         // Their own index beside them, so the abandoned series still opens in ParaView.
         PvdIndex abandoned(aside / "particles.pvd");
         for (const auto& e : pvd_->entries())
-            if (inLater(e.file)) abandoned.add(e.time, e.file);
+            if (inLater(e.file)) abandoned.add(e.time, e.file, e.part);
         if (!abandoned.entries().empty()) abandoned.write();
         // The earliest ten: a long run can leave thousands.
         std::string names;
@@ -189,6 +189,11 @@ void SolverRun::write(Solver& solver) {
     for (auto& file : solver.extraOutput()) files.push_back(std::move(file));
     writeTimeDirectory(case_.root(), time.timeName(), solver.particles(), files, time.value());
     pvd_->add(time.value(), time.timeName() + "/" + particleFileName);
+    // A grid method's image files (grid.vti) are further parts of the same time, so ParaView
+    // opens the grid with the particles (PvdIndex.hpp); the state and other files are not VTK.
+    int part = 0;
+    for (const auto& [name, contents] : files)
+        if (name.ends_with(".vti")) pvd_->add(time.value(), time.timeName() + "/" + name, ++part);
     pvd_->write();
     lastWritten_ = time.timeName();
     time_->wrote();
@@ -203,14 +208,16 @@ void SolverRun::purge() {
     // The initial conditions are never purged: they are the case's input, not a result.
     if (!times.empty() && times.front().name == "0") times.erase(times.begin());
     if (int(times.size()) <= keep) return;
-    std::set<std::string> removed;
+    std::set<std::string> removed;  // time directories
     for (std::size_t k = 0; k + keep < times.size(); ++k) {
         removeTimeDirectory(case_.root(), times[k].name);
-        removed.insert(times[k].name + "/" + particleFileName);
+        removed.insert(times[k].name);
     }
+    // Every part of a removed time goes (its particles.vtp and its grid.vti alike).
     PvdIndex pvd(pvd_->file());
     for (const auto& entry : pvd_->entries())
-        if (!removed.count(entry.file)) pvd.add(entry.time, entry.file);
+        if (!removed.count(entry.file.substr(0, entry.file.find('/'))))
+            pvd.add(entry.time, entry.file, entry.part);
     pvd.write();
     *pvd_ = std::move(pvd);
 }

@@ -195,3 +195,57 @@ TEST(PvdIndex, MutatedIndexIsReadOrRefusedCleanly) {
     }
     EXPECT_GT(refused, 50u) << "most mutations break the XML";
 }
+
+TEST(PvdIndex, PartsOfATimeAreKeptApartAndTruncatedTogether) {
+    // A grid method writes grid.vti beside particles.vtp: part 1 of the same time, so that
+    // ParaView opens both (grid/VtiWriter.hpp). Before parts, add() at the same time replaced
+    // the particles' entry with the grid's.
+    ScratchDir caseDir("pvdParts");
+    const auto file = caseDir.path() / "particles.pvd";
+    PvdIndex index(file);
+    for (double t : {0.1, 0.2}) {
+        const std::string dir = t == 0.1 ? "0.1" : "0.2";
+        index.add(t, dir + "/particles.vtp");
+        index.add(t, dir + "/grid.vti", 1);
+    }
+    index.add(0.1, "0.1/grid2.vti", 1);  // the same time and part: replaced
+    index.write();
+    const std::string text = readFile(file);
+    EXPECT_NE(text.find("<DataSet timestep=\"0.10000000000000001\" part=\"1\" file=\"0.1/grid2.vti\"/>"),
+              std::string::npos)
+        << text;
+    PvdIndex back = PvdIndex::read(file);
+    ASSERT_EQ(back.entries().size(), 4u);
+    EXPECT_EQ(back.entries()[0].file, "0.1/particles.vtp");
+    EXPECT_EQ(back.entries()[1].part, 1);
+    EXPECT_EQ(back.entries()[3].file, "0.2/grid.vti");
+    back.truncateAfter(0.1);
+    ASSERT_EQ(back.entries().size(), 2u);
+    EXPECT_EQ(back.entries()[0].part, 0);
+    EXPECT_EQ(back.entries()[1].part, 1);
+
+    // Read: listed grid first, particles second, a part repeated (the last kept); no part
+    // attribute is part 0; a part that is not a non-negative integer is an error at its line.
+    writeFile(file,
+              "<VTKFile type=\"Collection\"><Collection>\n"
+              "<DataSet timestep=\"1\" part=\"1\" file=\"1/old.vti\"/>\n"
+              "<DataSet timestep=\"1\" part=\"1\" file=\"1/grid.vti\"/>\n"
+              "<DataSet timestep=\"1\" file=\"1/particles.vtp\"/>\n"
+              "</Collection></VTKFile>\n");
+    const PvdIndex sorted = PvdIndex::read(file);
+    ASSERT_EQ(sorted.entries().size(), 2u);
+    EXPECT_EQ(sorted.entries()[0].file, "1/particles.vtp");
+    EXPECT_EQ(sorted.entries()[1].file, "1/grid.vti");
+    writeFile(file,
+              "<VTKFile type=\"Collection\"><Collection>\n"
+              "<DataSet timestep=\"1\" part=\"-1\" file=\"1/particles.vtp\"/>\n"
+              "</Collection></VTKFile>\n");
+    try {
+        PvdIndex::read(file);
+        FAIL() << "a negative part must be refused";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find("line 2: part \"-1\" is not a non-negative integer"),
+                  std::string::npos)
+            << e.what();
+    }
+}
