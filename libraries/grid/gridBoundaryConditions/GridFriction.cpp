@@ -1,10 +1,20 @@
-// `friction`: an axis-aligned rigid wall with Coulomb friction (GridFriction.hpp for the
-// equations). The wall's impulse per unit mass on a node moving into it is the normal velocity
-// it removes, dv_n = -(v.n); Coulomb's law bounds the tangential impulse by mu dv_n, and the
-// tangential velocity is brought towards zero by at most that much, never past it (a node
-// with |v_t| <= mu dv_n sticks): the frictional contact of Bardenhagen, Brackbill & Sulsky,
-// "The material-point method for granular materials", Comput. Methods Appl. Mech. Engrg. 187
-// (2000), with the second body a rigid wall at rest.
+// `friction`: an axis-aligned rigid wall with Coulomb friction, coefficient mu. At a selected
+// node with inward wall normal n (into the material), when the node moves into the wall,
+// v.n < 0:
+//
+//     dv_n = -(v.n)                           the normal velocity removed (> 0), as slip does
+//     v_t  = v - (v.n) n                      the tangential velocity
+//     v   <- v_t max(0, 1 - mu dv_n / |v_t|)  slowed by mu dv_n, never reversed
+//     a   <- a - (a.n) n - (v_t - v_new)/dt   the normal rate removed, the friction's
+//                                             deceleration added
+//
+// The wall's impulse per unit mass on the node is dv_n; Coulomb's law bounds the tangential
+// impulse by mu dv_n, so the tangential velocity is brought towards zero by at most that much
+// and a node with |v_t| <= mu dv_n sticks. A node with v.n >= 0 (leaving, or sliding along the
+// wall) is left free. This is the frictional contact of Bardenhagen, Brackbill & Sulsky, "The
+// material-point method for granular materials", Comput. Methods Appl. Mech. Engrg. 187 (2000),
+// with the second body a rigid wall at rest. Limits: axis-aligned walls only; mu = 0 is slip
+// while in contact; a corner node meets its walls one after the other, in the order of `faces`.
 #include "grid/gridBoundaryConditions/GridFriction.hpp"
 
 #include <algorithm>
