@@ -36,16 +36,16 @@ void appendField(std::string& out, const FieldBase& f, std::size_t n) {
     const std::uint64_t bytes = std::uint64_t(n) * source.size() * 8;
     appendBytes(out, &bytes, sizeof bytes);
     const int components = f.isInteger() ? 1 : f.components();
+    bool identity = int(source.size()) == components;
+    for (std::size_t k = 0; identity && k < source.size(); ++k) identity = source[k] == int(k);
+    // Scalars, integers and 3D vectors and tensors are in the file's layout already: one copy.
+    if (identity) return appendBytes(out, f.data(), bytes);
     out.reserve(out.size() + bytes);
     for (std::size_t i = 0; i < n; ++i)
         for (int s : source) {
-            if (f.isInteger()) {
-                const std::int64_t value = s < 0 ? 0 : static_cast<const std::int64_t*>(f.data())[i];
-                appendBytes(out, &value, 8);
-            } else {
-                const double value = s < 0 ? 0.0 : static_cast<const double*>(f.data())[i * components + s];
-                appendBytes(out, &value, 8);
-            }
+            // Doubles only: an integer field is one component, always the identity above.
+            const double value = s < 0 ? 0.0 : static_cast<const double*>(f.data())[i * components + s];
+            appendBytes(out, &value, 8);
         }
 }
 

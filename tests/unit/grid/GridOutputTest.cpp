@@ -89,6 +89,15 @@ TEST(VtiWriter, oneAndThreeDimensionsAndErrors) {
     ASSERT_NE(a, nullptr);
     ASSERT_EQ(a->components, 6);
     EXPECT_EQ(a->values[6 * (cube.nodeCount() - 1) + 4], 5.0);  // yz of the last node (x fastest)
+    // A tensor is row-major in the file, column-major in memory (VtpWriter.hpp): F_xy is the
+    // file's second component.
+    auto& F = cube.nodes().field<Tensor<3>>("deformationGradient");
+    F[1] = Tensor<3>::Identity();
+    F[1](0, 1) = 2.0;
+    const VtiImage withF = parseVti(vtiText(cube, 1.0, {"deformationGradient"}), "cube.vti");
+    EXPECT_EQ(withF.arrays[0].values[9 + 1], 2.0);
+    EXPECT_EQ(withF.arrays[0].values[9 + 3], 0.0);
+    EXPECT_EQ(withF.arrays[0].values[9 + 4], 1.0);
 
     CartesianGrid<1> line(Vector<1>(2.0), Vector<1>(0.5), {4});
     line.nodes().field<double>("mass")[4] = 7.0;
