@@ -5,18 +5,26 @@
 //
 // In `magnitude` mode a vector or tensor is reduced to its Euclidean (Frobenius) norm; in
 // `component` mode each stored component gets its own columns (name_x_min, ...).
+//
+// Derived field: `vonMisesStress`, when the run has no field of that name, is the standard von
+// Mises stress sqrt(3/2 s:s) of `cauchyStress` with its out-of-plane `cauchyStressZZ` below 3D
+// (the material point method's fields; VonMisesStress.hpp), computed at each write:
+//     vonMises { type fieldMinMax; fields (vonMisesStress); }
 #include "functionObjects/FieldMinMax.hpp"
+
+#include "functionObjects/VonMisesStress.hpp"
 
 #include "core/Parallel.hpp"
 
 #include <cmath>
 #include <limits>
+#include <optional>
 
 namespace mfdyn {
 
 KeywordSchema FieldMinMax::keywords() {
     return KeywordSchema("functionObject", "fieldMinMax")
-        .words("fields", "the fields to watch")
+        .words("fields", "the fields to watch (vonMisesStress: derived from cauchyStress, see the source)")
         .word("mode", {"magnitude", "component"}, "min and max of the magnitude, or of each component")
         .orDefault("magnitude")
         .append(functionObjectKeywords());
@@ -32,6 +40,15 @@ FieldMinMax::FieldMinMax(const KeywordValues& values, const std::string& name, c
     components_ = values.word("mode") == "component";
     std::vector<std::string> columns{"time"};
     for (const auto& field : fields_) {
+        if (derived(field)) {
+            try {
+                VonMisesField check(context.fields(), "");
+            } catch (const InputError& e) {
+                throw dict.error("fields", e.what());
+            }
+            for (const char* what : {"_min", "_minId", "_max", "_maxId"}) columns.push_back(field + what);
+            continue;
+        }
         const FieldBase* f = &requireField(dict, "fields", field);
         std::vector<std::string> parts{field};
         if (components_ && f->components() > 1) {
@@ -44,16 +61,24 @@ FieldMinMax::FieldMinMax(const KeywordValues& values, const std::string& name, c
     csv_ = std::make_unique<CsvFile>(outputFile("fieldMinMax.csv"), columns, startTime());
 }
 
+bool FieldMinMax::derived(const std::string& field) const {
+    return field == VonMisesField::name && !context().fields().findField(field);
+}
+
 void FieldMinMax::write() {
     const FieldStore& store = context().fields();
     const FieldBase& ids = store.field("globalId");
     std::vector<double> row{context().time().value()};
     for (const auto& name : fields_) {
-        const FieldBase& f = store.field(name);
-        const int nc = f.components();
+        const bool isDerived = derived(name);
+        std::optional<VonMisesField> vonMises;
+        if (isDerived) vonMises.emplace(store, "fieldMinMax '" + this->name() + "'");
+        const FieldBase& f = isDerived ? store.field("cauchyStress") : store.field(name);
+        const int nc = isDerived ? 1 : f.components();
         const int parts = components_ ? nc : 1;
         for (int p = 0; p < parts; ++p) {
             auto value = [&](std::size_t i) {
+                if (isDerived) return (*vonMises)(i);
                 if (components_ || nc == 1) return f.component(i, components_ ? p : 0);
                 double s = 0;
                 for (int c = 0; c < nc; ++c) s += f.component(i, c) * f.component(i, c);

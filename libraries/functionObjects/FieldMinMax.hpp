@@ -11,6 +11,8 @@ public:
 
 private:
     FieldMinMax(const KeywordValues& values, const std::string& name, const RunContext& context);
+    // `vonMisesStress` where the run has no such field: computed from cauchyStress.
+    bool derived(const std::string& field) const;
     std::vector<std::string> fields_;
     bool components_;
     std::unique_ptr<CsvFile> csv_;
