@@ -1,0 +1,582 @@
+// mpmFsi: the explicit material point method (doc/methods/mpm.md; Sulsky, Chen & Schreyer 1994;
+// Muthukumar 2021, the seed thesis). With N_Ip = N_I(x_p) and grad N_Ip evaluated once per step
+// at the start-of-step positions (note 2.2, 2.8) and used by every transfer of the step:
+//
+//   P2G (note 2.3)   m_I  = sum_p N_Ip m_p
+//                    (mv)_I = sum_p N_Ip m_p [v_p + C_p (x_I - x_p)]          (C_p = 0 but for APIC)
+//                    f_I  = sum_p [N_Ip m_p b_p - V_p sigma_p grad N_Ip],   V_p = J_p V0_p (once)
+//   grid (note 2.4, the code's signs; m_I >= massCutoff, else a = v = 0)
+//                    a_I = (f_I - alpha_d (mv)_I) / m_I,   v_I^{n+1} = (mv)_I / m_I + dt a_I
+//                    then the grid boundary conditions on v_I^{n+1} and a_I (note 2.5)
+//   G2P (note 2.6)   x_p += dt sum_I N_Ip v_I^{n+1}
+//                    v_p  = r (v_p + dt sum_I N_Ip a_I) + (1 - r) sum_I N_Ip v_I^{n+1}   (FLIP r = 1)
+//   stress           L_p = sum_I v_I (x) grad N_Ip,  F_p <- (I + dt L_p) F_p (multiplicative,
+//                    note 2.6: eq. 81's "+ F^t" is a misprint), J_p = det F_p,
+//                    P_p from the law (3x3, plane strain F_zz = 1 below 3D: materials/Embedding.hpp),
+//                    sigma_p = P_p F_p^T / J_p (note 1, eq. 19), W_p from the law (its exact energy)
+//
+// in the order of the scheme (MpmModels.cpp: USL, USF, MUSL). This is symplectic Euler: v from
+// the force at x^n, x from v^{n+1} (note 2.7). Linear and angular momentum: the internal forces
+// sum to zero on the grid (sum_I grad N_Ip = 0 for each particle); P2G conserves mass and momentum
+// exactly (sum_I N_Ip = 1); FLIP and PIC lose angular momentum in the transfers, APIC keeps it.
+// The P2G sums are deterministic for any thread count (ParticleColouring.hpp).
+#include "mpm/MpmSolver.hpp"
+
+#include "core/KeywordSchema.hpp"
+#include "core/Log.hpp"
+#include "core/Parallel.hpp"
+#include "grid/VtiWriter.hpp"
+#include "materials/Embedding.hpp"
+#include "solver/MaterialAssignment.hpp"
+#include "solver/SolverRegistry.hpp"
+#include "solver/SolverRun.hpp"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <sstream>
+
+namespace mfdyn {
+
+namespace {
+
+template <int Dim>
+std::string vectorText(const Vector<Dim>& a) {
+    std::ostringstream s;
+    s.precision(6);
+    s << "(";
+    for (int d = 0; d < Dim; ++d) s << (d ? " " : "") << a[d];
+    s << ")";
+    return s.str();
+}
+
+}  // namespace
+
+template <int Dim>
+KeywordSchema MpmSolver<Dim>::keywords() {
+    return KeywordSchema("solver", "mpmFsi")
+        .dictionary("grid", "the background grid: origin, cellSize, cells (or box and cellSize)")
+        .identifier("shapeFunction", "the grid shape functions (a shapeFunction type)")
+        .orDefault("linear")
+        .identifier("scheme", "when the stress is updated (an mpmScheme type: USL, USF, MUSL)")
+        .orDefault("USL")
+        .identifier("velocityUpdate", "how particles take the grid velocity (a velocityUpdate type)")
+        .orDefault("FLIP")
+        .identifier("gridDamping", "damping of the grid momentum (a gridDamping type)")
+        .orDefault("none")
+        .scalar("massCutoff", "kg", "nodes lighter than this get v = a = 0 (note 2.4)")
+        .greaterThan(0)
+        .orDefault(1e-10)
+        .word("outsideGrid", {"stop", "remove"},
+              "a particle leaving the grid stops the run, or is removed (its mass reported)")
+        .orDefault("stop")
+        .word("isolatedParticles", {"stop", "allow"},
+              "a particle sharing no grid node with any other particle (extension instability) stops the run")
+        .orDefault("stop")
+        .dictionary("bodyForce", "body force per unit mass b(x, t) (a bodyForce type)")
+        .optional()
+        .dictionary("gridBoundaryConditions", "conditions on grid nodes (gridBoundaryCondition types)")
+        .optional()
+        .flag("writeGrid", "write the node fields as grid.vti beside particles.vtp")
+        .orDefault(false);
+}
+
+template <int Dim>
+MpmSolver<Dim>::MpmSolver(SolverRun& run)
+    : Solver(run),
+      owner_(adoptParticleSet<Dim>(run.takeParticles())),
+      particles_(owner_.get()),
+      properties_(openConstant("mpmProperties")),
+      materialProperties_(openConstant("materialProperties")),
+      settings_(keywords().read(properties_)),
+      grid_(CartesianGrid<Dim>::fromDictionary(settings_.dictionary("grid"))),
+      x_(particles_->position()),
+      v_(particles_->vectorField("velocity")),
+      m_(requireScalarField(*particles_, "mass", "particle masses")),
+      rho0_(requireScalarField(*particles_, "density", "the reference density rho0: V0 = mass / density")) {
+    declarePhases({"shapeFunctions", "particleToGrid", "gridSolve", "gridToParticle", "stress"});
+    shape_ = selectByWord<ShapeFunction<Dim>>(properties_, "shapeFunction", "linear");
+    linearHats_ = shape_->type() == "linear";
+    scheme_ = selectByWord<MpmScheme>(properties_, "scheme", "USL");
+    velocityUpdate_ = selectByWord<VelocityUpdate>(properties_, "velocityUpdate", "FLIP");
+    damping_ = selectByWord<GridDamping>(properties_, "gridDamping", "none");
+    massCutoff_ = settings_.scalar("massCutoff");
+    removeOutside_ = settings_.word("outsideGrid") == "remove";
+    stopIsolated_ = settings_.word("isolatedParticles") == "stop";
+    writeGrid_ = settings_.flag("writeGrid");
+    if (settings_.given("bodyForce")) bodyForce_ = BodyForce::New(settings_.dictionary("bodyForce"), Dim);
+    // The support must fit in the grid (a cubic B-spline needs 4 node layers along each axis).
+    if (const std::string problem = shape_->gridProblem(grid_); !problem.empty()) {
+        std::string types;
+        for (const auto& name : ShapeFunction<Dim>::Selector::names())
+            types += (types.empty() ? "" : " | ") + name;
+        throw properties_.error(
+            properties_.found("shapeFunction") ? "shapeFunction" : "grid",
+            problem + ": refine the grid or choose a narrower shape function (valid types: " + types + ")");
+    }
+    readMaterials();
+    initialiseFields();
+}
+
+template <int Dim>
+MpmSolver<Dim>::~MpmSolver() = default;
+
+template <int Dim>
+void MpmSolver<Dim>::readMaterials() {
+    // A constitutive law per material (the total-Lagrangian laws, evaluated on the particle's F):
+    // an equation of state or a strength law is refused at its entry by the material set, which
+    // names what mpmFsi takes (the updated-Lagrangian path of impactSph is not built yet).
+    MaterialModels models;
+    models.method = "mpmFsi";
+    models.constitutiveLaw = ModelUse::required;
+    materials_ = std::make_unique<MaterialSet<Dim>>(materialProperties_, models);
+    plastic_ = materials_->usesPlasticState();
+    assignMaterials(*particles_, materials_->names(), materialProperties_);
+    material_ = &particles_->integerField("material");
+}
+
+template <int Dim>
+void MpmSolver<Dim>::initialiseFields() {
+    const std::size_t n = x_.size();
+    checkPositiveMassAndDensity(*particles_, m_, rho0_);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double lawRho0 = law(i).referenceDensity();
+        if (std::abs(rho0_[i] - lawRho0) > 1e-9 * lawRho0)
+            throw materialProperties_.error(
+                "materials", "particle " + std::to_string(particles_->globalId()[i]) + " has density " +
+                                 formatKeywordNumber(rho0_[i]) + " but its material '" +
+                                 materials_->names()[(*material_)[i]] + "' has rho0 " +
+                                 formatKeywordNumber(lawRho0) +
+                                 ": generate the particles with the material's density");
+    }
+    // The grid must cover every particle at the start (bad input, not a run-time event).
+    for (std::size_t i = 0; i < n; ++i)
+        if (!grid_.contains(x_[i]))
+            throw properties_.error(
+                "grid", "particle " + std::to_string(particles_->globalId()[i]) + " (body " + bodyName(i) +
+                            ") at " + vectorText<Dim>(x_[i]) + " lies outside the grid, which spans " +
+                            vectorText<Dim>(grid_.origin()) + " to " + vectorText<Dim>(grid_.upperCorner()) +
+                            ": enlarge the grid (origin, cells) to cover every particle");
+    const bool hadF = particles_->hasField("deformationGradient");
+    F_ = &particles_->tensorField("deformationGradient");
+    if (!hadF) std::fill(F_->begin(), F_->end(), Tensor<Dim>::Identity());
+    sigma_ = &particles_->symmTensorField("cauchyStress");
+    if (Dim < 3) sigmaZZ_ = &particles_->scalarField("cauchyStressZZ");
+    J_ = &particles_->scalarField("jacobian");
+    W_ = &particles_->scalarField("storedEnergyDensity");
+    if (velocityUpdate_->affine()) C_ = &particles_->tensorField("affineVelocity");
+    if (plastic_) {
+        const bool had = particles_->hasField("plasticDeformation");
+        plasticDeformation_ = &particles_->symmTensorField("plasticDeformation");
+        if (Dim < 3) plasticOutOfPlane_ = &particles_->scalarField("plasticDeformationOutOfPlane");
+        plasticStrain_ = &particles_->scalarField("plasticStrain");
+        if (!had)
+            for (std::size_t i = 0; i < n; ++i) {
+                (*plasticDeformation_)[i] = SymmTensor<Dim>::fromFull(Tensor<Dim>::Identity());
+                if (plasticOutOfPlane_) (*plasticOutOfPlane_)[i] = 1.0;
+            }
+    }
+    FieldStore& nodes = grid_.nodes();
+    nodeMass_ = &nodes.field<double>("mass");
+    nodeMomentum_ = &nodes.field<Vector<Dim>>("momentum");
+    nodeForce_ = &nodes.field<Vector<Dim>>("force");
+    nodeVelocity_ = &nodes.field<Vector<Dim>>("velocity");
+    nodeAcceleration_ = &nodes.field<Vector<Dim>>("acceleration");
+    if (settings_.given("gridBoundaryConditions")) {
+        gridConditions_ =
+            GridBoundaryConditionList<Dim>(settings_.dictionary("gridBoundaryConditions"), grid_);
+        for (const auto& line : gridConditions_.describe()) Log::info("grid boundary condition " + line);
+    }
+    initialMass_ = GlobalReduce::sum<double>(n, [&](std::size_t i) { return m_[i]; });
+    // sigma, J and W of the start state (for the first write and the function objects).
+    updateStress(0.0, false);
+
+    std::ostringstream s;
+    s << "mpmFsi: " << grid_.describe() << "; shapeFunction " << shape_->type() << ", scheme "
+      << scheme_->type() << ", velocityUpdate " << velocityUpdate_->describe() << ", gridDamping "
+      << damping_->describe() << ", massCutoff " << massCutoff_ << " kg, " << n << " particles";
+    Log::info(s.str());
+}
+
+template <int Dim>
+std::string MpmSolver<Dim>::bodyName(std::size_t i) const {
+    const std::int64_t r = particles_->region()[i];
+    if (r >= 0 && std::size_t(r) < particles_->regionNames.size())
+        return particles_->regionNames[std::size_t(r)];
+    return "region " + std::to_string(r);
+}
+
+template <int Dim>
+void MpmSolver<Dim>::preStep() {
+    checkInsideGrid();
+}
+
+template <int Dim>
+void MpmSolver<Dim>::checkInsideGrid() {
+    const std::size_t n = x_.size();
+    auto outside = [&](std::size_t i) { return !grid_.contains(x_[i]); };
+    if (!removeOutside_) {
+        Solver::checkState("preStep", n, outside, [&](std::size_t i, double count) {
+            std::ostringstream s;
+            s << "particle " << particles_->globalId()[i] << " (body " << bodyName(i) << ") at "
+              << vectorText<Dim>(x_[i]) << " has left the grid, which spans "
+              << vectorText<Dim>(grid_.origin()) << " to " << vectorText<Dim>(grid_.upperCorner()) << "; "
+              << count
+              << " particle(s) outside. Remedies: a larger grid (constant/mpmProperties grid), or an open "
+                 "boundary that removes such particles (outsideGrid remove;)";
+            return s.str();
+        });
+        return;
+    }
+    // outsideGrid remove: a global count first, so that every rank agrees whether to compact.
+    const double count = GlobalReduce::sum<double>(n, [&](std::size_t i) { return outside(i) ? 1.0 : 0.0; });
+    if (count == 0) return;
+    const double mass = GlobalReduce::sum<double>(n, [&](std::size_t i) { return outside(i) ? m_[i] : 0.0; });
+    std::vector<std::size_t> keep;
+    keep.reserve(n);
+    std::string bodies;
+    for (std::size_t i = 0; i < n; ++i) {
+        if (!outside(i))
+            keep.push_back(i);
+        else if (bodies.find(bodyName(i)) == std::string::npos)
+            bodies += (bodies.empty() ? "" : ", ") + bodyName(i);
+    }
+    particles_->keep(keep);
+    removedMass_ += mass;
+    removedParticles_ += std::size_t(count);
+    std::ostringstream s;
+    s.precision(6);
+    s << "outsideGrid remove: " << count << " particle(s) of " << bodies
+      << " left the grid at t = " << time().value() << ", mass " << mass << " kg removed (" << removedMass_
+      << " kg in all, " << 100.0 * removedMass_ / initialMass_ << "% of the initial mass)";
+    Log::info(s.str());
+}
+
+template <int Dim>
+TimeStepVote MpmSolver<Dim>::stableTimeStep() {
+    // The CFL vote (note 2.7 [D]): dt = C min(dx) / max_p (c_p + |v_p|), c the p-wave speed of the
+    // particle's material; a global vote (every rank steps with the same dt), one per material so
+    // that the progress line can name the limiting one.
+    const std::size_t n = x_.size();
+    double speed = 0;
+    std::size_t limiting = 0;
+    for (std::size_t k = 0; k < materials_->size(); ++k) {
+        const double c = (*materials_)[k].constitutiveLaw->pWaveSpeed();
+        const double s = GlobalReduce::max(
+            n, [&](std::size_t i) { return std::int64_t(k) == (*material_)[i] ? c + v_[i].norm() : 0.0; });
+        if (s > speed) speed = s, limiting = k;
+    }
+    const double courant = time().maxCo(0.3);
+    TimeStepVote vote{std::numeric_limits<double>::infinity(), "CFL"};
+    if (speed > 0)
+        vote = {courant * grid_.smallestCellSize() / speed,
+                "CFL (maxCo dx / (c + |v|), material " + materials_->names()[limiting] + ")"};
+    if (bodyForce_)
+        if (auto force = bodyForce_->stableTimeStep(); force.deltaT < vote.deltaT) vote = force;
+    return vote;
+}
+
+template <int Dim>
+void MpmSolver<Dim>::evaluateShapeFunctions() {
+    auto timed = phase("shapeFunctions");
+    const std::size_t n = x_.size();
+    if (shape_->needsParticleSize()) {
+        // uGIMP: the particle's half-extent from its initial volume, l_p = V0^(1/Dim) / 2 per axis.
+        halfSize_.resize(n);
+        parallelFor(n, [&](std::size_t i) {
+            halfSize_[i] = Vector<Dim>::Constant(0.5 * std::pow(m_[i] / rho0_[i], 1.0 / Dim));
+        });
+    }
+    shape_->evaluate(grid_, std::span<const Vector<Dim>>(x_), std::span<const Vector<Dim>>(halfSize_), list_);
+    colouring_.build(grid_, std::span<const Vector<Dim>>(x_), list_);
+}
+
+template <int Dim>
+void MpmSolver<Dim>::mapMassAndMomentum() {
+    auto& mass = *nodeMass_;
+    auto& momentum = *nodeMomentum_;
+    std::fill(mass.begin(), mass.end(), 0.0);
+    std::fill(momentum.begin(), momentum.end(), Vector<Dim>::Zero());
+    const std::size_t stride = list_.stride;
+    colouring_.forEachParticle([&](std::size_t p) {
+        const std::size_t base = p * stride;
+        for (std::size_t k = 0; k < list_.count[p]; ++k) {
+            const auto node = list_.node[base + k];
+            const double Nm = list_.weight[base + k] * m_[p];
+            mass[node] += Nm;
+            if (C_)
+                momentum[node] += Nm * (v_[p] + (*C_)[p] * (grid_.nodePosition(node) - x_[p]));
+            else
+                momentum[node] += Nm * v_[p];
+        }
+    });
+}
+
+template <int Dim>
+void MpmSolver<Dim>::mapForces(double t) {
+    auto& force = *nodeForce_;
+    std::fill(force.begin(), force.end(), Vector<Dim>::Zero());
+    const std::size_t stride = list_.stride;
+    colouring_.forEachParticle([&](std::size_t p) {
+        Vector<Dim> b = Vector<Dim>::Zero();
+        if (bodyForce_) bodyForce_->acceleration(x_[p].data(), t, b.data());
+        // V_p sigma_p with V_p = J_p V0_p: the only place the current volume enters (note 2.3).
+        const Tensor<Dim> Vsigma = ((*J_)[p] * m_[p] / rho0_[p]) * (*sigma_)[p].full();
+        const Vector<Dim> mb = m_[p] * b;
+        const std::size_t base = p * stride;
+        for (std::size_t k = 0; k < list_.count[p]; ++k)
+            force[list_.node[base + k]] += list_.weight[base + k] * mb - Vsigma * list_.gradient[base + k];
+    });
+}
+
+template <int Dim>
+void MpmSolver<Dim>::nodeVelocityFromMomentum(double t) {
+    auto& v = *nodeVelocity_;
+    const auto& mass = *nodeMass_;
+    const auto& momentum = *nodeMomentum_;
+    parallelFor(v.size(), [&](std::size_t I) {
+        v[I] = mass[I] >= massCutoff_ ? Vector<Dim>(momentum[I] / mass[I]) : Vector<Dim>::Zero();
+    });
+    if (!gridConditions_.empty()) gridConditions_.apply(grid_, v, nullptr, t, 0.0);
+}
+
+template <int Dim>
+void MpmSolver<Dim>::solveGrid(double dt, double t) {
+    auto timed = phase("gridSolve");
+    auto& v = *nodeVelocity_;
+    auto& a = *nodeAcceleration_;
+    const auto& mass = *nodeMass_;
+    const auto& momentum = *nodeMomentum_;
+    const auto& force = *nodeForce_;
+    const double alpha = damping_->coefficient();
+    // Note 2.4 with the signs of the author's code: a = (f - alpha mv) / m, v = mv / m + a dt.
+    parallelFor(v.size(), [&](std::size_t I) {
+        if (mass[I] >= massCutoff_) {
+            a[I] = (force[I] - alpha * momentum[I]) / mass[I];
+            v[I] = momentum[I] / mass[I] + dt * a[I];
+        } else {
+            a[I] = Vector<Dim>::Zero();
+            v[I] = Vector<Dim>::Zero();
+        }
+    });
+    if (!gridConditions_.empty()) gridConditions_.apply(grid_, v, &a, t + dt, dt);
+}
+
+template <int Dim>
+void MpmSolver<Dim>::gridToParticles(double dt) {
+    auto timed = phase("gridToParticle");
+    const auto& vI = *nodeVelocity_;
+    const auto& aI = *nodeAcceleration_;
+    const double r = velocityUpdate_->flipFraction();
+    const std::size_t stride = list_.stride;
+    parallelFor(x_.size(), [&](std::size_t p) {
+        const std::size_t base = p * stride;
+        Vector<Dim> vPic = Vector<Dim>::Zero(), aFlip = Vector<Dim>::Zero();
+        for (std::size_t k = 0; k < list_.count[p]; ++k) {
+            const double N = list_.weight[base + k];
+            vPic += N * vI[list_.node[base + k]];
+            aFlip += N * aI[list_.node[base + k]];
+        }
+        if (C_) {
+            // APIC's C_p = B_p D_p^-1 (MpmModels.cpp): for linear hats exactly sum_I v_I (x) grad N_Ip.
+            Tensor<Dim> C = Tensor<Dim>::Zero();
+            if (linearHats_) {
+                for (std::size_t k = 0; k < list_.count[p]; ++k)
+                    C += vI[list_.node[base + k]] * list_.gradient[base + k].transpose();
+            } else {
+                Tensor<Dim> B = Tensor<Dim>::Zero(), D = Tensor<Dim>::Zero();
+                for (std::size_t k = 0; k < list_.count[p]; ++k) {
+                    const double N = list_.weight[base + k];
+                    const Vector<Dim> dx = grid_.nodePosition(list_.node[base + k]) - x_[p];
+                    B += N * vI[list_.node[base + k]] * dx.transpose();
+                    D += N * dx * dx.transpose();
+                }
+                C = B * D.inverse();
+            }
+            (*C_)[p] = C;
+        }
+        x_[p] += dt * vPic;
+        v_[p] = r * (v_[p] + dt * aFlip) + (1.0 - r) * vPic;
+    });
+}
+
+template <int Dim>
+void MpmSolver<Dim>::updateStress(double dt, bool advanceState) {
+    auto timed = phase("stress");
+    const std::size_t stride = list_.stride;
+    const bool move = dt != 0.0;
+    const auto& vI = *nodeVelocity_;
+    parallelFor(x_.size(), [&](std::size_t p) {
+        if (move) {
+            Tensor<Dim> L = Tensor<Dim>::Zero();
+            const std::size_t base = p * stride;
+            for (std::size_t k = 0; k < list_.count[p]; ++k)
+                L += vI[list_.node[base + k]] * list_.gradient[base + k].transpose();
+            (*F_)[p] = (Tensor<Dim>::Identity() + dt * L) * (*F_)[p];
+        }
+        const Tensor<3> F3 = embed<Dim>((*F_)[p], 1.0);
+        const Tensor<3> H3 = cofactor(F3);
+        const double J = F3.determinant();
+        Tensor<3> P3;
+        double w = 0, pressure = 0;
+        SymmTensor<3> cp;
+        double epsP = 0;
+        ConstitutiveLaw::Fields f;
+        f.size = 1, f.F = &F3, f.H = &H3, f.J = &J, f.P = &P3, f.pressure = &pressure, f.energyDensity = &w;
+        const ConstitutiveLaw& law = this->law(p);
+        if (law.usesPlasticState()) {
+            cp = SymmTensor<3>::fromFull(embed<Dim>((*plasticDeformation_)[p].full(),
+                                                    plasticOutOfPlane_ ? (*plasticOutOfPlane_)[p] : 1.0));
+            epsP = (*plasticStrain_)[p];
+            f.plasticState = &cp, f.plasticStrain = &epsP;
+        }
+        law.stress(f, advanceState);
+        if (advanceState && law.usesPlasticState()) {
+            const Tensor<3> c = cp.full();
+            (*plasticDeformation_)[p] = SymmTensor<Dim>::fromFull(inPlane<Dim>(c));
+            if (plasticOutOfPlane_) (*plasticOutOfPlane_)[p] = c(2, 2);
+            (*plasticStrain_)[p] = epsP;
+        }
+        // Cauchy sigma = P F^T / J (symmetric for an objective law; its symmetric part is stored).
+        const Tensor<3> sigma = P3 * F3.transpose() / J;
+        (*sigma_)[p] = SymmTensor<Dim>::fromFull(inPlane<Dim>(sigma));
+        if (sigmaZZ_) (*sigmaZZ_)[p] = sigma(2, 2);
+        (*J_)[p] = J;
+        (*W_)[p] = w;
+    });
+}
+
+template <int Dim>
+void MpmSolver<Dim>::checkIsolated() {
+    if (!stopIsolated_) return;
+    const auto& mass = *nodeMass_;
+    const std::size_t stride = list_.stride;
+    // Isolated: on every node of its support the mass is the particle's own share, N_Ip m_p, to
+    // round-off; no other particle is within reach, so its body has torn apart at it.
+    auto isolated = [&](std::size_t p) {
+        const std::size_t base = p * stride;
+        for (std::size_t k = 0; k < list_.count[p]; ++k) {
+            const double N = list_.weight[base + k];
+            if (N <= 0) continue;
+            const double m = mass[list_.node[base + k]];
+            if (m - N * m_[p] > 1e-12 * m) return false;
+        }
+        return true;
+    };
+    Solver::checkState("particleToGrid", x_.size(), isolated, [&](std::size_t p, double count) {
+        std::ostringstream s;
+        s << "particle " << particles_->globalId()[p] << " (body " << bodyName(p) << ") at "
+          << vectorText<Dim>(x_[p]) << " shares no grid node with any other particle: it has separated from "
+          << "its body by more than the shape function's support (numerical fracture, the extension "
+             "instability of doc/methods/mpm.md section 6.2); "
+          << count
+          << " particle(s) isolated. Remedies: more particles per cell (particleGen), a coarser grid, "
+             "or a wider shape function (uGIMP, quadraticBSpline); `isolatedParticles allow;` runs on";
+        return s.str();
+    });
+}
+
+template <int Dim>
+void MpmSolver<Dim>::checkFinite(const char* phaseName) const {
+    auto bad = [&](std::size_t i) {
+        return !x_[i].allFinite() || !v_[i].allFinite() || !(*F_)[i].allFinite() || !((*J_)[i] > 0) ||
+               !(*sigma_)[i].full().allFinite();
+    };
+    Solver::checkState(phaseName, x_.size(), bad, [&](std::size_t i, double count) {
+        std::ostringstream s;
+        s.precision(6);
+        s << "particle " << particles_->globalId()[i] << " (body " << bodyName(i) << ", material "
+          << materials_->names()[(*material_)[i]] << ") at " << vectorText<Dim>(x_[i])
+          << " has J = " << (*J_)[i] << ", |v| = " << v_[i].norm() << "; " << count
+          << " particle(s) affected. ";
+        if (!((*J_)[i] > 0))
+            s << "The particle is inverted (J <= 0): too large a step (lower maxCo or deltaT), or a law "
+                 "unstable in compression (stVenantKirchhoff below a stretch of 1/sqrt(3), note 1: use "
+                 "neoHookean)";
+        else
+            s << "The state is no longer finite: the step is unstable (lower maxCo or deltaT)";
+        return s.str();
+    });
+}
+
+template <int Dim>
+void MpmSolver<Dim>::step(double dt) {
+    const double t = time().value();
+    evaluateShapeFunctions();
+    {
+        auto timed = phase("particleToGrid");
+        mapMassAndMomentum();
+    }
+    checkIsolated();
+    const auto order = scheme_->stressUpdate();
+    if (order == MpmScheme::StressUpdate::first) {
+        // USF: the stress from the velocity the particles bring, v_I^n = (mv)_I / m_I.
+        nodeVelocityFromMomentum(t);
+        updateStress(dt, true);
+    }
+    {
+        auto timed = phase("particleToGrid");
+        mapForces(t);
+    }
+    solveGrid(dt, t);
+    gridToParticles(dt);
+    if (order == MpmScheme::StressUpdate::modifiedLast) {
+        // MUSL: the updated particle velocities mapped back, v_I = sum N m v_p^{n+1} / m_I.
+        auto timed = phase("particleToGrid");
+        mapMassAndMomentum();
+        nodeVelocityFromMomentum(t + dt);
+    }
+    if (order != MpmScheme::StressUpdate::first) updateStress(dt, true);
+    particleSteps_ += std::int64_t(x_.size());
+    checkFinite("step");
+}
+
+template <int Dim>
+std::optional<double> MpmSolver<Dim>::internalEnergy() const {
+    // The exact stored energy sum_p V0_p W(F_p) (note 4.3 [D]; not 1/2 sigma:eps): a
+    // conservation sum over the whole body.
+    return GlobalReduce::sum<double>(x_.size(), [&](std::size_t i) { return m_[i] / rho0_[i] * (*W_)[i]; });
+}
+
+template <int Dim>
+std::optional<double> MpmSolver<Dim>::potentialEnergy() const {
+    if (!bodyForce_) return std::nullopt;
+    return GlobalReduce::sum<double>(
+        x_.size(), [&](std::size_t i) { return m_[i] * bodyForce_->potential(x_[i].data()); });
+}
+
+template <int Dim>
+std::vector<ExtraFile> MpmSolver<Dim>::extraOutput() const {
+    if (!writeGrid_) return {};
+    return {vtiFile(grid_, time().value(), "grid.vti", {"mass", "momentum", "velocity", "force"})};
+}
+
+template <int Dim>
+std::vector<std::string> MpmSolver<Dim>::summary(double loopSeconds) const {
+    std::vector<std::string> lines;
+    char line[200];
+    std::snprintf(line, sizeof line, "particle-steps/s     %.4g (%zu P2G colours of %d",
+                  loopSeconds > 0 ? double(particleSteps_) / loopSeconds : 0.0, colouring_.colours(),
+                  colouring_.period()[0]);
+    std::string text = line;
+    for (int d = 1; d < Dim; ++d) text += " x " + std::to_string(colouring_.period()[d]);
+    lines.push_back(text + " node layers)");
+    if (removedParticles_ > 0) {
+        std::snprintf(line, sizeof line,
+                      "outsideGrid remove   %zu particles, %.6g kg (%.4g%% of the initial mass)",
+                      removedParticles_, removedMass_, 100.0 * removedMass_ / initialMass_);
+        lines.push_back(line);
+    }
+    return lines;
+}
+
+template class MpmSolver<1>;
+template class MpmSolver<2>;
+template class MpmSolver<3>;
+
+MFDYN_REGISTER_SOLVER(MpmSolver, "mpmFsi",
+                      "The explicit material point method (USL/USF/MUSL, FLIP/PIC/APIC)");
+
+}  // namespace mfdyn

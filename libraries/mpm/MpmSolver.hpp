@@ -1,0 +1,153 @@
+#pragma once
+// mpmFsi: the explicit material point method for solids (doc/methods/mpm.md; Sulsky, Chen &
+// Schreyer 1994; the thesis of the seed, Muthukumar 2021), in 1, 2 and 3 dimensions (plane
+// strain below 3D). Particles carry the state (x, v, m, V0, F, sigma); each step maps them to a
+// Cartesian background grid, solves the momentum balance on its nodes and maps back:
+//
+//     shapeFunctions (N, grad N once per step) -> particleToGrid (m, mv, f) -> gridSolve
+//     (damping, mass cut-off, grid boundary conditions) -> gridToParticle (x, v) -> stress (L, F,
+//     sigma), in the order of the `scheme` (USL, USF, MUSL)
+//
+// constant/mpmProperties:
+//     grid            { origin (0 0); cellSize (0.05 0.05); cells (20 20); }   // grid/CartesianGrid.hpp
+//     shapeFunction   linear;          // linear | uGIMP | quadraticBSpline | cubicBSpline
+//     scheme          USL;             // USL | USF | MUSL (MpmModels.hpp)
+//     velocityUpdate  FLIP;            // FLIP | PIC | flipPic (flipFraction r) | APIC
+//     gridDamping     none;            // none | massProportional (dampingCoefficient alpha_d, 1/s)
+//     massCutoff      1e-10;           // kg: nodes lighter than this get v = a = 0
+//     outsideGrid     stop;            // stop | remove (a particle leaving the grid)
+//     isolatedParticles stop;          // stop | allow (extension instability: below)
+//     bodyForce       { type uniformGravity; g (0 -9.81); }              // optional
+//     gridBoundaryConditions { top { type slip; faces (yMax); } }        // optional
+//     writeGrid       no;              // grid.vti beside particles.vtp at each write
+//
+// system/controlDict: the CFL vote dt = maxCo min(dx) / (c + |v|) (maxCo default 0.3; c the
+// material's p-wave speed); `adjustTimeStep no;` keeps deltaT fixed (the thesis's way), checked
+// against the vote.
+//
+// constant/materialProperties: a constitutive law per material (stVenantKirchhoff, neoHookean,
+// linearElastic, mooneyRivlin, j2Plasticity, ...), as for tlSph.
+//
+// Fields: position, velocity, mass, density (rho0; V0 = mass / density), region (the body),
+// material, deformationGradient F (I at a fresh start), cauchyStress (SymmTensor<Dim>: particle
+// fields have the set's dimension) and below 3D cauchyStressZZ (the out-of-plane sigma_zz of
+// plane strain), jacobian (det F), storedEnergyDensity (W per reference volume);
+// affineVelocity C_p with APIC; plasticDeformation, plasticStrain with a plastic law.
+//
+// Diagnoses, never NaN: a particle outside the grid stops the run naming it, its body, the time
+// and the remedies (or, with `outsideGrid remove;`, is removed with the mass lost logged); a
+// particle whose grid nodes carry no mass of any other particle (separated from its body by more
+// than the support: numerical fracture, the extension instability of note 6.2) stops the run.
+#include "grid/CartesianGrid.hpp"
+#include "grid/gridBoundaryConditions/GridBoundaryCondition.hpp"
+#include "grid/shapeFunctions/ShapeFunction.hpp"
+#include "materials/MaterialSet.hpp"
+#include "mpm/MpmModels.hpp"
+#include "mpm/ParticleColouring.hpp"
+#include "solver/BodyForce.hpp"
+#include "solver/Solver.hpp"
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace mfdyn {
+
+template <int Dim>
+class MpmSolver final : public Solver {
+public:
+    explicit MpmSolver(SolverRun& run);
+    ~MpmSolver() override;
+    static constexpr const char* propertiesDictionary = "mpmProperties";
+    static KeywordSchema keywords();
+
+    void preStep() override;
+    TimeStepVote stableTimeStep() override;
+    void step(double dt) override;
+    ParticleSetBase& particles() override { return *particles_; }
+    std::optional<double> internalEnergy() const override;
+    std::optional<double> potentialEnergy() const override;
+    std::vector<ExtraFile> extraOutput() const override;
+    std::vector<std::string> summary(double loopSeconds) const override;
+
+    const CartesianGrid<Dim>& grid() const { return grid_; }
+
+private:
+    void readMaterials();
+    void initialiseFields();
+    void evaluateShapeFunctions();
+    // P2G of mass and momentum (with the affine term under APIC).
+    void mapMassAndMomentum();
+    // P2G of the internal and body forces, f_I = sum_p N_Ip m_p b_p - V_p sigma_p grad N_Ip.
+    void mapForces(double t);
+    // v_I = (mv)_I / m_I where m_I >= massCutoff, else 0; the grid conditions at time t.
+    void nodeVelocityFromMomentum(double t);
+    void solveGrid(double dt, double t);
+    void gridToParticles(double dt);
+    // L = sum_I v_I (x) grad N_Ip from the node velocity, F <- (I + dt L) F, sigma and W.
+    void updateStress(double dt, bool advanceState);
+    // The particles outside the grid (preStep), and the isolated ones (after the mass map).
+    void checkInsideGrid();
+    void checkIsolated();
+    void checkFinite(const char* phaseName) const;
+    std::string bodyName(std::size_t i) const;
+    const ConstitutiveLaw& law(std::size_t i) const {
+        return *(*materials_)[(*material_)[i]].constitutiveLaw;
+    }
+
+    std::unique_ptr<ParticleSet<Dim>> owner_;
+    ParticleSet<Dim>* particles_;
+    const Dictionary& properties_;
+    const Dictionary& materialProperties_;
+    const KeywordValues settings_;
+    CartesianGrid<Dim> grid_;
+    std::unique_ptr<ShapeFunction<Dim>> shape_;
+    std::unique_ptr<MpmScheme> scheme_;
+    std::unique_ptr<VelocityUpdate> velocityUpdate_;
+    std::unique_ptr<GridDamping> damping_;
+    std::unique_ptr<BodyForce> bodyForce_;
+    std::unique_ptr<MaterialSet<Dim>> materials_;
+    GridBoundaryConditionList<Dim> gridConditions_;
+    double massCutoff_ = 1e-10;
+    bool removeOutside_ = false;
+    bool stopIsolated_ = true;
+    bool writeGrid_ = false;
+    bool linearHats_ = false;
+    bool plastic_ = false;
+    double removedMass_ = 0;
+    std::size_t removedParticles_ = 0;
+    double initialMass_ = 0;
+
+    std::vector<Vector<Dim>>& x_;
+    std::vector<Vector<Dim>>& v_;
+    std::vector<double>& m_;
+    std::vector<double>& rho0_;
+    std::vector<std::int64_t>* material_ = nullptr;
+    std::vector<Tensor<Dim>>* F_ = nullptr;
+    std::vector<SymmTensor<Dim>>* sigma_ = nullptr;
+    std::vector<double>* sigmaZZ_ = nullptr;  // below 3D: sigma_zz of plane strain
+    std::vector<double>* J_ = nullptr;
+    std::vector<double>* W_ = nullptr;
+    std::vector<Tensor<Dim>>* C_ = nullptr;  // APIC's affine velocity
+    std::vector<SymmTensor<Dim>>* plasticDeformation_ = nullptr;
+    std::vector<double>* plasticOutOfPlane_ = nullptr;
+    std::vector<double>* plasticStrain_ = nullptr;
+
+    // Node fields (grid_.nodes()): mass, momentum, force, velocity, acceleration.
+    std::vector<double>* nodeMass_ = nullptr;
+    std::vector<Vector<Dim>>* nodeMomentum_ = nullptr;
+    std::vector<Vector<Dim>>* nodeForce_ = nullptr;
+    std::vector<Vector<Dim>>* nodeVelocity_ = nullptr;
+    std::vector<Vector<Dim>>* nodeAcceleration_ = nullptr;
+
+    ParticleNodeList<Dim> list_;
+    ParticleColouring<Dim> colouring_;
+    std::vector<Vector<Dim>> halfSize_;  // uGIMP: half the particle's extent, 0.5 V0^(1/Dim)
+    std::int64_t particleSteps_ = 0;
+};
+
+extern template class MpmSolver<1>;
+extern template class MpmSolver<2>;
+extern template class MpmSolver<3>;
+
+}  // namespace mfdyn

@@ -1,0 +1,322 @@
+// mpmFsi end to end on small hand-made cases (doc/methods/mpm.md section 5): the conservation of
+// the particle-to-grid map (U2), rigid translation (U4) and rigid rotation for every shape
+// function and scheme, and the bad input that must be an InputError at its file and line.
+#include "core/Application.hpp"
+#include "grid/VtiWriter.hpp"
+#include "mpm/MpmSolver.hpp"
+#include "particles/ParticleSet.hpp"
+#include "particles/TimeDirectory.hpp"
+#include "particles/VtpReader.hpp"
+#include "solver/SolverRun.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <random>
+#include <sstream>
+
+#include <unistd.h>
+
+namespace mfdyn {
+namespace {
+
+namespace fs = std::filesystem;
+
+void writeFile(const fs::path& file, const std::string& text) {
+    fs::create_directories(file.parent_path());
+    std::ofstream(file) << text;
+}
+
+std::string readText(const fs::path& file) {
+    std::ifstream in(file);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+struct CaseSpec {
+    std::string name;
+    std::string properties;  // constant/mpmProperties
+    std::string material =
+        "elastic { rho0 1000; youngsModulus 1e4; poissonRatio 0.3; "
+        "constitutiveLaw { type stVenantKirchhoff; } }";
+    double endTime = 0.1;
+    double deltaT = 1e-3;
+    std::string writeInterval = "0.1";
+};
+
+fs::path caseDir(const std::string& name) {
+    return fs::temp_directory_path() / ("mfdyn-mpm-" + name + "-" + std::to_string(::getpid()));
+}
+
+// The case files around a particle set written at time 0.
+fs::path makeCase(const CaseSpec& spec, const ParticleSet<2>& particles) {
+    const fs::path dir = caseDir(spec.name);
+    fs::remove_all(dir);
+    std::ostringstream control;
+    control << "application mpmFsi;\nstartFrom startTime;\nstartTime 0;\nstopAt endTime;\nendTime "
+            << spec.endTime << ";\ndeltaT " << spec.deltaT
+            << ";\nadjustTimeStep no;\nwriteControl adjustableRunTime;\nwriteInterval " << spec.writeInterval
+            << ";\nwritePrecision 8;\nstrictDictionaries yes;\n";
+    writeFile(dir / "system/controlDict", control.str());
+    writeFile(dir / "constant/mpmProperties", spec.properties);
+    writeFile(dir / "constant/materialProperties", "materials { " + spec.material + " }\n");
+    writeTimeDirectory(dir, "0", particles);
+    return dir;
+}
+
+int runMpm(const fs::path& dir) {
+    ApplicationInfo info{"mpmFsi", "the mpmFsi unit tests", {}, {}};
+    std::string a0 = "mpmFsi", a1 = "-case", a2 = dir.string();
+    char* argv[] = {a0.data(), a1.data(), a2.data()};
+    const Arguments args = Arguments::parse(3, argv, info);
+    return runSolver<MpmSolver>(args, "mpmFsi");
+}
+
+// A block of k x k particles per cell (centres of sub-cells) over [lo, hi]^2, density 1000,
+// every particle with velocity v(x).
+template <class Velocity>
+ParticleSet<2> block(double lo, double hi, double spacing, Velocity&& velocity) {
+    const int n = int(std::lround((hi - lo) / spacing));
+    ParticleSet<2> p(std::size_t(n * n));
+    auto& v = p.vectorField("velocity");
+    auto& m = p.scalarField("mass");
+    auto& rho = p.scalarField("density");
+    p.regionNames = {"block"};
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const std::size_t k = std::size_t(j * n + i);
+            p.globalId()[k] = std::int64_t(k);
+            p.position()[k] = Vector<2>(lo + (i + 0.5) * spacing, lo + (j + 0.5) * spacing);
+            v[k] = velocity(p.position()[k]);
+            rho[k] = 1000;
+            m[k] = 1000 * spacing * spacing;
+        }
+    return p;
+}
+
+const ParticleSet<2>& result(const ParticleFile& file) {
+    return particleSetCast<2>(*file.particles);
+}
+
+const char* const shapeFunctions[] = {"linear", "uGIMP", "quadraticBSpline", "cubicBSpline"};
+const char* const schemes[] = {"USL", "USF", "MUSL"};
+
+std::string properties(const std::string& shape, const std::string& scheme, const std::string& update,
+                       const std::string& extra = "") {
+    return "grid { origin (0 0); cellSize (0.1 0.1); cells (10 10); }\nshapeFunction " + shape +
+           ";\nscheme " + scheme + ";\nvelocityUpdate " + update + ";\n" + extra;
+}
+
+// U2: one step from a strained, moving block (F != I read from the particle file, random
+// velocities): on the grid, sum m_I = sum m_p, sum (mv)_I = sum m_p v_p^n (1e-12 relative; the
+// map's weights sum to one to round-off), and the internal forces sum to zero (every particle's
+// gradients sum to zero) to 1e-12 of sum |f_I|. Every shape function, USL and USF (MUSL re-maps
+// the updated velocities after the step: its momentum is that of the particles' v^{n+1}).
+TEST(MpmTransfers, ParticleToGridConservesMassMomentumAndForce) {
+    for (const char* shape : shapeFunctions)
+        for (const char* scheme : {"USL", "USF", "MUSL"}) {
+            std::mt19937 random(7);
+            std::uniform_real_distribution<double> u(-1, 1);
+            ParticleSet<2> p =
+                block(0.33, 0.67, 0.034, [&](const Vector<2>&) { return Vector<2>(u(random), u(random)); });
+            auto& F = p.tensorField("deformationGradient");
+            for (auto& f : F)
+                f << 1 + 0.02 * u(random), 0.03 * u(random), 0.03 * u(random), 1 + 0.02 * u(random);
+            CaseSpec spec{std::string("p2g-") + shape + "-" + scheme,
+                          properties(shape, scheme, "FLIP", "writeGrid yes;\n")};
+            spec.endTime = spec.deltaT = 1e-4;
+            spec.writeInterval = "1e-4";
+            const fs::path dir = makeCase(spec, p);
+            ASSERT_EQ(runMpm(dir), 0);
+            const ParticleFile after = readVtp(dir / "0.0001" / particleFileName);
+            const VtiImage grid = parseVti(readText(dir / "0.0001" / "grid.vti"), "grid.vti");
+            const auto* mass = grid.find("mass");
+            const auto* momentum = grid.find("momentum");
+            const auto* force = grid.find("force");
+            ASSERT_TRUE(mass && momentum && force);
+            double M = 0, m = 0, fAbs = 0;
+            Vector<2> P = Vector<2>::Zero(), Pgrid = Vector<2>::Zero(), f = Vector<2>::Zero();
+            // The momentum mapped: v^n for USL and USF, v^{n+1} (the particles' after the step) for MUSL.
+            const auto& vMapped = std::string(scheme) == "MUSL"
+                                      ? result(after).template requireField<Vector<2>>("velocity")
+                                      : p.requireField<Vector<2>>("velocity");
+            for (std::size_t i = 0; i < p.size(); ++i) {
+                m += p.requireField<double>("mass")[i];
+                P += p.requireField<double>("mass")[i] * vMapped[i];
+            }
+            for (std::size_t I = 0; I < mass->values.size(); ++I) {
+                M += mass->values[I];
+                for (int d = 0; d < 2; ++d) {
+                    Pgrid[d] += momentum->values[3 * I + std::size_t(d)];
+                    f[d] += force->values[3 * I + std::size_t(d)];
+                    fAbs += std::abs(force->values[3 * I + std::size_t(d)]);
+                }
+            }
+            SCOPED_TRACE(std::string(shape) + " " + scheme);
+            EXPECT_LT(std::abs(M - m), 1e-12 * m);
+            EXPECT_LT((Pgrid - P).norm(), 1e-12 * P.norm());
+            EXPECT_GT(fAbs, 1.0);  // the strained block does carry forces (|f| ~ 50 N here)
+            EXPECT_LT(f.norm(), 1e-12 * fAbs);
+            fs::remove_all(dir);
+        }
+}
+
+// U4: a block translating at (0.3, -0.2) without gravity or grid conditions for 100 steps: F
+// stays I and v constant to 1e-12, x = x0 + v t to 1e-12, with every shape function, scheme and
+// velocity update (the map reproduces a uniform velocity exactly: sum N = 1, sum grad N = 0).
+// massCutoff 1e-20 kg: with the default 1e-10 the nodes at the edge of uGIMP's support, whose
+// weight falls to zero quadratically, carry less than 1e-10 kg and get v = 0 (note 2.4's rule),
+// which shifts L by (0 - v) (x) grad N, measured 3e-10 in F after 100 steps (the thesis's rule is
+// kept: such nodes are numerically empty; here the test asks for exactness).
+TEST(MpmTransfers, RigidTranslationKeepsFAndVelocity) {
+    const Vector<2> v0(0.3, -0.2);
+    for (const char* shape : shapeFunctions)
+        for (const char* scheme : schemes)
+            for (const char* update : {"FLIP", "PIC", "APIC"}) {
+                const ParticleSet<2> p = block(0.3, 0.6, 0.025, [&](const Vector<2>&) { return v0; });
+                CaseSpec spec{std::string("translate-") + shape + "-" + scheme + "-" + update,
+                              properties(shape, scheme, update, "massCutoff 1e-20;\n")};
+                const fs::path dir = makeCase(spec, p);
+                ASSERT_EQ(runMpm(dir), 0);
+                const ParticleFile after = readVtp(dir / "0.1" / particleFileName);
+                const auto& q = result(after);
+                const auto& F = q.requireField<Tensor<2>>("deformationGradient");
+                const auto& v = q.requireField<Vector<2>>("velocity");
+                double errF = 0, errV = 0, errX = 0;
+                for (std::size_t i = 0; i < q.size(); ++i) {
+                    errF = std::max(errF, (F[i] - Tensor<2>::Identity()).cwiseAbs().maxCoeff());
+                    errV = std::max(errV, (v[i] - v0).norm());
+                    errX = std::max(errX, (q.position()[i] - p.position()[i] - 0.1 * v0).norm());
+                }
+                SCOPED_TRACE(std::string(shape) + " " + scheme + " " + update);
+                EXPECT_LT(errF, 1e-12);
+                EXPECT_LT(errV, 1e-12);
+                EXPECT_LT(errX, 1e-12);
+                fs::remove_all(dir);
+            }
+}
+
+// A disk (r = 0.2, 4 cells across, 4 x 4 particles per cell) spinning rigidly at 2 rad/s about
+// its centre (0.5, 0.5), without gravity, for 0.25 s (500 steps), USL: its angular momentum about
+// the centre. FLIP and PIC particles carry sum m x x v; APIC's carry in addition the affine part
+// m (B_yx - B_xy) with B = C D (Jiang et al. 2015, who show that the transfers keep the sum).
+// D = dx^2/4 I for quadratic B-splines (the disk stays clear of the modified edge cells), so APIC
+// keeps the sum to round-off there. With linear hats D = diag((x - x_i)(x_i+1 - x)) changes as the
+// particle moves and vanishes on a node, so C = sum v_I (x) grad N is stored in its place and
+// the sum drifts (measured -4.4e-3). Measured with linear hats: FLIP -2.9e-2; PIC -1.0 (its
+// average over a cell erases the rotation at 4 cells per diameter: -13% per step).
+TEST(MpmTransfers, RigidRotationAngularMomentumPerVelocityUpdate) {
+    const double omega = 2.0, dx = 0.1;
+    auto spin = [&](const Vector<2>& x) { return Vector<2>(-omega * (x[1] - 0.5), omega * (x[0] - 0.5)); };
+    auto angularMomentum = [&](const ParticleSet<2>& s, bool linear) {
+        const auto& m = s.requireField<double>("mass");
+        const auto& v = s.requireField<Vector<2>>("velocity");
+        const auto* C = s.findField<Tensor<2>>("affineVelocity");
+        double L = 0;
+        for (std::size_t i = 0; i < s.size(); ++i) {
+            const Vector<2>& x = s.position()[i];
+            const Vector<2> r = x - Vector<2>(0.5, 0.5);
+            L += m[i] * (r[0] * v[i][1] - r[1] * v[i][0]);
+            if (C) {
+                Vector<2> D = Vector<2>::Constant(0.25 * dx * dx);
+                if (linear)
+                    for (int d = 0; d < 2; ++d) {
+                        const double lo = std::floor(x[d] / dx) * dx;
+                        D[d] = (x[d] - lo) * (lo + dx - x[d]);
+                    }
+                L += m[i] * ((*C)[i](1, 0) * D[0] - (*C)[i](0, 1) * D[1]);
+            }
+        }
+        return L;
+    };
+    std::map<std::string, double> drift;
+    const std::pair<const char*, const char*> runs[] = {
+        {"FLIP", "linear"}, {"PIC", "linear"}, {"APIC", "linear"}, {"APIC", "quadraticBSpline"}};
+    for (const auto& [update, shape] : runs) {
+        ParticleSet<2> all = block(0.3, 0.7, 0.025, spin);
+        std::vector<std::size_t> inside;
+        for (std::size_t i = 0; i < all.size(); ++i)
+            if ((all.position()[i] - Vector<2>(0.5, 0.5)).norm() < 0.2) inside.push_back(i);
+        all.keep(inside);
+        const std::string name = std::string(update) + " " + shape;
+        CaseSpec spec{std::string("rotate-") + update + "-" + shape, properties(shape, "USL", update)};
+        spec.endTime = 0.25;
+        spec.deltaT = 5e-4;
+        spec.writeInterval = "0.25";
+        const fs::path dir = makeCase(spec, all);
+        ASSERT_EQ(runMpm(dir), 0);
+        const ParticleFile after = readVtp(dir / "0.25" / particleFileName);
+        const bool linear = std::string(shape) == "linear";
+        const double L0 = angularMomentum(all, linear), L1 = angularMomentum(result(after), linear);
+        drift[name] = (L1 - L0) / L0;
+        std::printf("rigid rotation, %s: angular momentum drift %.3e over 0.25 s (500 steps)\n", name.c_str(),
+                    drift[name]);
+        fs::remove_all(dir);
+    }
+    EXPECT_LT(std::abs(drift["APIC quadraticBSpline"]), 1e-10);
+    EXPECT_LT(std::abs(drift["APIC linear"]), 1e-2);
+    EXPECT_LT(drift["PIC linear"], -0.5);
+    EXPECT_LT(drift["FLIP linear"], -1e-3);
+    EXPECT_LT(std::abs(drift["APIC linear"]), std::abs(drift["FLIP linear"]));
+}
+
+// Bad input: each an InputError naming the file and line and the valid choices.
+std::string inputError(const CaseSpec& spec, const ParticleSet<2>& particles) {
+    const fs::path dir = makeCase(spec, particles);
+    std::string text;
+    try {
+        runMpm(dir);
+    } catch (const InputError& e) {
+        text = e.what();
+    }
+    EXPECT_FALSE(fs::exists(dir / "0.1")) << "nothing may be written after bad input";
+    fs::remove_all(dir);
+    return text;
+}
+
+TEST(MpmInput, AGridThatDoesNotCoverTheParticlesIsRefused) {
+    const ParticleSet<2> p = block(0.8, 1.2, 0.05, [](const Vector<2>&) { return Vector<2>::Zero(); });
+    const std::string text = inputError({"cover", properties("linear", "USL", "FLIP")}, p);
+    EXPECT_NE(text.find("mpmProperties:1"), std::string::npos) << text;
+    EXPECT_NE(text.find("lies outside the grid, which spans (0 0) to (1 1)"), std::string::npos) << text;
+    EXPECT_NE(text.find("(body block)"), std::string::npos) << text;
+}
+
+TEST(MpmInput, AShapeFunctionWiderThanTheGridIsRefused) {
+    const ParticleSet<2> p = block(0.1, 0.3, 0.05, [](const Vector<2>&) { return Vector<2>::Zero(); });
+    const std::string text = inputError(
+        {"wide", "grid { origin (0 0); cellSize (0.5 0.5); cells (2 2); }\nshapeFunction cubicBSpline;\n"},
+        p);
+    EXPECT_NE(text.find("mpmProperties:2"), std::string::npos) << text;
+    EXPECT_NE(text.find("cubicBSpline"), std::string::npos) << text;
+    EXPECT_NE(text.find("valid types: cubicBSpline | linear | quadraticBSpline | uGIMP"), std::string::npos)
+        << text;
+}
+
+TEST(MpmInput, AMisspeltSchemeListsTheValidOnes) {
+    const ParticleSet<2> p = block(0.3, 0.5, 0.05, [](const Vector<2>&) { return Vector<2>::Zero(); });
+    const std::string text = inputError(
+        {"scheme", "grid { origin (0 0); cellSize (0.1 0.1); cells (10 10); }\n\nscheme MUSK;\n"}, p);
+    EXPECT_NE(text.find("mpmProperties:3"), std::string::npos) << text;
+    EXPECT_NE(text.find("MUSK"), std::string::npos) << text;
+    EXPECT_NE(text.find("MUSL"), std::string::npos) << text;
+    EXPECT_NE(text.find("USF"), std::string::npos) << text;
+}
+
+TEST(MpmInput, AMaterialTheMethodCannotUseIsRefused) {
+    // A fluid (an equation of state) is the next issue's: refused at its entry, naming the method.
+    const ParticleSet<2> p = block(0.3, 0.5, 0.05, [](const Vector<2>&) { return Vector<2>::Zero(); });
+    CaseSpec spec{"fluid", properties("linear", "USL", "FLIP")};
+    spec.material = "water { rho0 1000; equationOfState { type tait; rho0 1000; c0 10; gamma 7; } }";
+    const std::string text = inputError(spec, p);
+    EXPECT_NE(text.find("materialProperties:1"), std::string::npos) << text;
+    EXPECT_NE(text.find("mpmFsi"), std::string::npos) << text;
+    EXPECT_NE(text.find("equationOfState"), std::string::npos) << text;
+}
+
+}  // namespace
+}  // namespace mfdyn
