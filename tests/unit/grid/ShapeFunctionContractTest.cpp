@@ -269,6 +269,49 @@ TEST(ShapeFunctionContract, everyTypeIn3D) {
     checkEveryType<3>();
 }
 
+// On the smallest grid a type accepts (minimumCells() per axis) every window spans the whole
+// grid and the folds at both edges meet: the partition of unity, completeness and N >= 0 still hold.
+template <int Dim>
+void checkSmallestGrid(const std::string& type) {
+    SCOPED_TRACE(type + " in " + std::to_string(Dim) + "D on its smallest grid");
+    const auto sf = makeShapeFunction<Dim>(type);
+    typename CartesianGrid<Dim>::Ijk cells;
+    cells.fill(sf->minimumCells());
+    Vector<Dim> h;
+    for (int d = 0; d < Dim; ++d) h[d] = 0.1 + 0.03 * d;
+    const CartesianGrid<Dim> grid(Vector<Dim>::Constant(0.5), h, cells);
+    ASSERT_TRUE(sf->gridProblem(grid).empty());
+    cells.fill(sf->minimumCells() - 1);
+    if (sf->minimumCells() > 1)
+        EXPECT_FALSE(sf->gridProblem(CartesianGrid<Dim>(Vector<Dim>::Zero(), h, cells)).empty());
+    const Samples<Dim> s = samples(grid, 200, 29);
+    ParticleNodeList<Dim> list;
+    sf->evaluate(grid, s.x, s.halfSize, list);
+    for (std::size_t p = 0; p < s.x.size(); ++p) {
+        double sum = 0.0;
+        Vector<Dim> moment = Vector<Dim>::Zero(), gradientSum = Vector<Dim>::Zero();
+        for (std::size_t e = p * list.stride; e < (p + 1) * list.stride; ++e) {
+            ASSERT_GE(list.node[e], 0);
+            ASSERT_LT(list.node[e], std::int64_t(grid.nodeCount()));
+            EXPECT_GE(list.weight[e], -1e-15);
+            sum += list.weight[e];
+            moment += list.weight[e] * grid.nodePosition(list.node[e]);
+            gradientSum += list.gradient[e];
+        }
+        EXPECT_NEAR(sum, 1.0, 1e-14) << "particle " << p;
+        for (int a = 0; a < Dim; ++a) {
+            EXPECT_NEAR(moment[a], s.x[p][a], 1e-13) << "particle " << p;
+            EXPECT_NEAR(gradientSum[a] * h[a], 0.0, 1e-13) << "particle " << p;
+        }
+    }
+}
+
+TEST(ShapeFunctionContract, smallestGridOfEveryType) {
+    for (const std::string& type : ShapeFunction<1>::Selector::names()) checkSmallestGrid<1>(type);
+    for (const std::string& type : ShapeFunction<2>::Selector::names()) checkSmallestGrid<2>(type);
+    for (const std::string& type : ShapeFunction<3>::Selector::names()) checkSmallestGrid<3>(type);
+}
+
 // What the contract is for: U2 of doc/methods/mpm.md section 5 in miniature. A mass and momentum
 // spread with N and gathered back sum to the particle's, and sum grad N = 0 makes the internal
 // forces f_I = -sum_p V_p sigma_p grad N_Ip sum to zero for any stresses.
