@@ -5,6 +5,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+
+#include <unistd.h>
 
 namespace mfdyn {
 
@@ -13,6 +16,12 @@ namespace {
 // A bound on the node count: far above any grid that fits in memory (a velocity field of 2^40
 // nodes is 24 TB), low enough that the index arithmetic never overflows an int64.
 constexpr double maxNodes = 1099511627776.0;  // 2^40
+
+// The machine's physical memory, or 0 where the system does not say.
+double physicalMemoryBytes() {
+    const long pages = ::sysconf(_SC_PHYS_PAGES), pageSize = ::sysconf(_SC_PAGESIZE);
+    return pages > 0 && pageSize > 0 ? double(pages) * double(pageSize) : 0.0;
+}
 
 std::string axisWord(int dim) {
     return std::to_string(dim) + "D";
@@ -170,11 +179,27 @@ CartesianGrid<Dim> CartesianGrid<Dim>::fromDictionary(const Dictionary& dict) {
     }
     // What the checks above cannot see (a node count above the limit, an upper corner that
     // overflows) is the constructor's Error, located here at the grid dictionary.
+    std::optional<CartesianGrid> grid;
     try {
-        return CartesianGrid(origin, cellSize, cells);
+        grid.emplace(origin, cellSize, cells);
     } catch (const Error& e) {
         throw InputError(dict.where(), dict.scope(), e.what());
     }
+    // A cell size typed a factor of ten too small in 3D asks for a thousand times the nodes: say
+    // so here, at the entry, rather than as an allocation failure when the first node field is
+    // made. The least a grid method stores per node is a mass, a momentum, a velocity and a force.
+    const double bytes = double(grid->nodeCount()) * double(1 + 3 * Dim) * 8.0;
+    const double memory = physicalMemoryBytes();
+    if (memory > 0.0 && bytes > memory)
+        throw v.error(hasSize ? "cellSize" : "cells", "the grid has " + std::to_string(grid->nodeCount()) +
+                                                          " nodes, whose mass, momentum, velocity "
+                                                          "and force alone need " +
+                                                          formatKeywordNumber(std::round(bytes / 1e9)) +
+                                                          " GB, more than the " +
+                                                          formatKeywordNumber(std::round(memory / 1e9)) +
+                                                          " GB of memory of this machine: a larger cell "
+                                                          "size, or fewer cells?");
+    return std::move(*grid);
 }
 
 template <int Dim>

@@ -118,6 +118,13 @@ TEST(CartesianGrid, wrongDimensionAndBadBoxesAreErrors) {
     EXPECT_NE(e.find("needs `origin"), std::string::npos) << e;
     e = errorOf<2>("origin (0 0); cells (3 3);");
     EXPECT_NE(e.find("cellSize"), std::string::npos) << e;
+    // 10^4 cells per axis in 3D (a 1 m box with cellSize 1e-4): 1e12 nodes, 80 TB of mass,
+    // momentum, velocity and force, beyond any machine's memory: refused at the entry, not an
+    // allocation failure later.
+    e = errorOf<3>("box { min (0 0 0); max (1 1 1); }\ncellSize 1e-4;");
+    EXPECT_NE(e.find("constant/mpmProperties:3"), std::string::npos) << e;
+    EXPECT_NE(e.find("1000300030001 nodes"), std::string::npos) << e;
+    EXPECT_NE(e.find("GB of memory of this machine"), std::string::npos) << e;
     // 2^21 cells per axis in 3D is 2^63 nodes: refused, not an overflow.
     e = errorOf<3>("origin (0 0 0); cellSize 1; cells (2097152 2097152 2097152);");
     EXPECT_NE(e.find("2^40"), std::string::npos) << e;
