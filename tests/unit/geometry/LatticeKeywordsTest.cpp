@@ -32,9 +32,9 @@ TEST(LatticeKeywords, EveryTypeDeclaresSpacingJitterAndSeed) {
     test::expectRegisteredSchemas(Lattice::familyName, schemas, "libraries/geometry/");
     for (const KeywordSchema& schema : schemas) {
         for (const char* name : {"spacing", "jitter", "seed"}) ASSERT_NE(schema.find(name), nullptr) << name;
-        EXPECT_EQ(schema.find("spacing")->kind,
-                  schema.type() == "nodal" || schema.type() == "materialPoints" ? Keyword::Kind::optional
-                                                                                 : Keyword::Kind::required);
+        EXPECT_EQ(schema.find("spacing")->kind, schema.type() == "nodal" || schema.type() == "materialPoints"
+                                                    ? Keyword::Kind::optional
+                                                    : Keyword::Kind::required);
         EXPECT_EQ(schema.find("jitter")->defaultValue, "0");
         EXPECT_EQ(schema.find("seed")->defaultValue, "1");
     }
