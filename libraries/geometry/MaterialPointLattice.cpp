@@ -29,17 +29,30 @@
 namespace mfdyn {
 
 KeywordSchema MaterialPointLattice::keywords() {
-    return commonKeywords("materialPoints", true)
-        .append(
-            KeywordSchema(familyName, "materialPoints")
-                .vector("cells", "-",
-                        "sub-cells per direction over the shape's bounding box (instead of spacing)")
-                .optional()
-                .example("(10 10)")
-                .word("pattern", {"centre", "gauss"},
-                      "points per sub-cell: its centre (the thesis's pattern 1) or its 2^dim Gauss points "
-                      "(pattern 2)")
-                .orDefault("centre"));
+    // The lattice family's spacing, jitter and seed (Lattice reads them by these names), with the
+    // meanings they have here: spacing is the sub-cell size, jitter a fraction of the distance
+    // between neighbouring points.
+    return KeywordSchema(familyName, "materialPoints")
+        .scalar("spacing", "m",
+                "the sub-cell size (instead of cells), adjusted to a whole number of sub-cells of the "
+                "bounding box")
+        .greaterThan(0)
+        .optional()
+        .scalar("jitter", "-",
+                "random displacement of each coordinate, a fraction of the distance between points")
+        .atLeast(0)
+        .lessThan(0.5)
+        .orDefault(0.0)
+        .integer("seed", "-", "seed of the jitter's random numbers (std::mt19937_64)")
+        .atLeast(0)
+        .orDefault(1)
+        .vector("cells", "-", "sub-cells per direction over the shape's bounding box (instead of spacing)")
+        .optional()
+        .example("(10 10)")
+        .word(
+            "pattern", {"centre", "gauss"},
+            "points per sub-cell: its centre (the thesis's pattern 1) or its 2^dim Gauss points (pattern 2)")
+        .orDefault("centre");
 }
 
 MaterialPointLattice::MaterialPointLattice(const Dictionary& dict, int dimension)
