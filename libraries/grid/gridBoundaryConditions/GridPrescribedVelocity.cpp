@@ -1,7 +1,12 @@
-// `prescribedVelocity` (GridPrescribedVelocity.hpp): on the prescribed components v_i = v_i(t),
-// a_i = dv_i/dt. The rate, not (v_i(t) - v_i^n)/dt, goes into the acceleration: for a constant
-// velocity it is zero, which is the thesis's rule for every grid condition (mpm.md 2.5: a = 0
-// where v is set), and fixed is then prescribedVelocity (0 0 0).
+// `prescribedVelocity`: chosen components of the node velocity follow a constant or a table in
+// time (rows (t (vx vy vz)), linear between them, held before the first and after the last):
+//
+//     v_i = v_i(t),   a_i = dv_i/dt(t)   on the components of `components (...)` (default all)
+//
+// with t the time of the updated velocity. The rate, not (v_i(t) - v_i^n)/dt, goes into the
+// acceleration: for a constant velocity it is zero, which is the thesis's rule for every grid
+// condition (doc/methods/mpm.md 2.5: a = 0 where v is set), and fixed is prescribedVelocity
+// (0 0 0). The other components are free.
 #include "grid/gridBoundaryConditions/GridPrescribedVelocity.hpp"
 
 #include <algorithm>
