@@ -347,7 +347,10 @@ void TlSphSolver<Dim>::initialiseFields() {
             "Essential boundary conditions by the Lagrange-multiplier projection (Lee et al. 2016 App. B): " +
             std::to_string(essential_->size()) + " constrained particles");
     }
-    for (std::size_t k = 0; k < materials_->size(); ++k) cpMax_ = std::max(cpMax_, law(k).pWaveSpeed());
+    for (std::size_t k = 0; k < materials_->size(); ++k) {
+        cpMax_ = std::max(cpMax_, law(k).pWaveSpeed());
+        csMax_ = std::max(csMax_, std::sqrt(law(k).shearModulus() / law(k).referenceDensity()));
+    }
 
     // P and the pressure of the initial state, for the first write and the function objects.
     if (formulation_.displacementBased()) computeDisplacementGradient();
@@ -375,7 +378,8 @@ void TlSphSolver<Dim>::initialiseFields() {
       << (projectMomentum_ ? "yes" : "no") << ", dissipation " << (projectDissipation_ ? "yes" : "no")
       << ", jacobian " << (projectJacobian_ ? "yes" : "no");
     Log::info(s.str());
-    if (const std::string warning = model.stabilityWarning(courant()); !warning.empty())
+    if (const std::string warning = model.stabilityWarning(courant(), csMax_ / cpMax_, J_ != nullptr);
+        !warning.empty())
         Log::warning(warning);
 }
 
@@ -617,7 +621,7 @@ void TlSphSolver<Dim>::computeRates(const std::vector<Vector<Dim>>& xTilde, doub
         };
         TlDissipation::Block block;
         block.size = n, block.dimension = Dim;
-        block.waveSpeed = cpMax_, block.spacing = spacing_;
+        block.waveSpeed = cpMax_, block.shearSpeed = csMax_, block.spacing = spacing_;
         block.rho0 = rho0_.data();
         block.lapP = raw(lapP_), block.lap2P = raw(lap2P_);
         block.lapJ = raw(lapJ_), block.lap2J = raw(lap2J_);

@@ -145,6 +145,7 @@ private:
     bool currentWaveSpeed_ = true;
     std::optional<double> deformedCourant_;  // tlSphProperties' deformedCourant, when given
     double spacing_ = 0, h_ = 0, cpMax_ = 0;
+    double csMax_ = 0;  // the largest shear-wave speed sqrt(mu/rho0), for the JST momentumSpeed shear
     std::unique_ptr<BodyForce> bodyForce_;  // null without a bodyForce sub-dictionary
     bool plastic_ = false;
 

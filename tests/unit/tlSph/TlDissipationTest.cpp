@@ -28,7 +28,7 @@ std::string errorOf(const std::string& text) {
     return test::inputErrorOf([&] { model(text); }, text);
 }
 
-// D(p) and D(J) of `m` on two particles in 2D with given Laplacians, c_p = 100, h = 0.1.
+// D(p) and D(J) of `m` on two particles in 2D with given Laplacians, c_p = 100, c_s = 20, h = 0.1.
 struct Evaluated {
     std::vector<double> p, J;
 };
@@ -37,7 +37,7 @@ Evaluated evaluate(const TlDissipation& m) {
         lap2J{5, 6};
     Evaluated out{std::vector<double>(4, -99.0), std::vector<double>(2, -99.0)};
     TlDissipation::Block b;
-    b.size = 2, b.dimension = 2, b.waveSpeed = 100, b.spacing = 0.1, b.rho0 = rho0.data();
+    b.size = 2, b.dimension = 2, b.waveSpeed = 100, b.shearSpeed = 20, b.spacing = 0.1, b.rho0 = rho0.data();
     if (m.needsMomentumLaplacian()) b.lapP = lapP.data();
     if (m.needsMomentumBiLaplacian()) b.lap2P = lap2P.data();
     if (m.needsJacobianLaplacian()) b.lapJ = lapJ.data();
@@ -91,10 +91,47 @@ TEST(TlDissipationContract, DefaultsGivenValuesAndWhatEachModelEvaluates) {
     // none asks for nothing and acts on nothing.
     const auto none = model("type none;");
     EXPECT_FALSE(none->actsOnMomentum() || none->actsOnJacobian() || none->needsMomentumLaplacian());
-    // The RK2 stability floor eps4 > maxCo^3/8 is the jst model's warning.
-    EXPECT_EQ(paper->stabilityWarning(0.3), "");  // 1/8 > 0.3^3/8
-    EXPECT_NE(model("type jst; momentum (0 0.003);")->stabilityWarning(0.3).find("maxCo^3/8"),
+    // The RK2 stability floor eps4 > maxCo^3/8 is the jst model's warning (on c_p, whatever c_s/c_p).
+    EXPECT_EQ(paper->stabilityWarning(0.3, 0.1, false), "");  // 1/8 > 0.3^3/8
+    EXPECT_NE(model("type jst; momentum (0 0.003);")->stabilityWarning(0.3, 0.1, true).find("maxCo^3/8"),
               std::string::npos);
+}
+
+// momentumSpeed shear (issue 16): the momentum terms take c_s (20 here) instead of c_p (100), the J
+// terms keep c_p; the default is the paper's c_p on both, so a plain `jst` is unchanged.
+TEST(TlDissipationContract, MomentumSpeedShearScalesTheMomentumTermsWithTheShearSpeed) {
+    const std::string coefficients = "momentum (0.125 0.0625); jacobian (0.1 0.5);";
+    const Evaluated onP = evaluate(*model("type jst; momentumSpeed pressure; " + coefficients));
+    const Evaluated byDefault = evaluate(*model("type jst; " + coefficients));
+    EXPECT_EQ(onP.p, byDefault.p);
+    EXPECT_EQ(onP.J, byDefault.J);
+    const Evaluated onS = evaluate(*model("type jst; momentumSpeed shear; " + coefficients));
+    // c_s h = 2, c_s h^3 = 0.02: D(p)_0 = 0.125 * 2 * 1 - 0.0625 * 0.02 * 10.
+    EXPECT_DOUBLE_EQ(onS.p[0], 0.125 * 2 * 1 - 0.0625 * 0.02 * 10);
+    EXPECT_DOUBLE_EQ(onS.p[3], 0.125 * 2 * 4 - 0.0625 * 0.02 * 40);
+    for (int k = 0; k < 4; ++k) EXPECT_DOUBLE_EQ(onS.p[k], 0.2 * onP.p[k]) << k;  // c_s / c_p = 0.2
+    EXPECT_EQ(onS.J, onP.J);                                                      // D(J) stays on c_p
+    EXPECT_NE(model("type jst; momentumSpeed shear;")->describe().find("momentum on c_s"), std::string::npos);
+    EXPECT_EQ(model("type jst;")->describe().find("c_s"), std::string::npos);
+
+    // The RK2 floor on the pressure waves, carried by two equations (p and J, or p and F):
+    // (eps4_p c_s/c_p + eps4_J)/2 > maxCo^3/8 (JstDissipation.cpp). maxCo 0.3: floor 3.375e-3.
+    // nu 0.45 (c_s/c_p = 1/3.32), {p,F}: 0.125/3.32/2 = 1.9e-2, stable.
+    const auto shear = model("type jst; momentumSpeed shear;");
+    EXPECT_EQ(shear->stabilityWarning(0.3, 1 / 3.32, false), "");
+    // nu 0.499 (c_s/c_p = 1/22.4) without D(J): 2.8e-3, warned (the 4 mm plate in {p,F,J} with
+    // jacobian (0 0) and momentumSpeed shear grew its energy 2.5e5-fold by 0.2 s), with the remedies.
+    const std::string pF = shear->stabilityWarning(0.3, 1 / 22.4, false);
+    EXPECT_NE(pF.find("damps the pressure waves"), std::string::npos) << pF;
+    EXPECT_NE(pF.find("momentumSpeed pressure"), std::string::npos) << pF;
+    EXPECT_NE(shear->stabilityWarning(0.3, 1 / 22.4, true), "");  // J evolved but eps4_J = 0
+    // ... with eps4_J 1/8 in {p,F,J} the J term damps them: (5.6e-3 + 0.125)/2, no warning; the
+    // same model in {p,F} (J not evolved, its D(J) unused) is warned.
+    const auto withJ = model("type jst; momentumSpeed shear; jacobian (0 0.125);");
+    EXPECT_EQ(withJ->stabilityWarning(0.3, 1 / 22.4, true), "");
+    EXPECT_NE(withJ->stabilityWarning(0.3, 1 / 22.4, false), "");
+    // The same coefficients on c_p are not warned (1/8 > 3.375e-3): the warning is the speed's.
+    EXPECT_EQ(model("type jst;")->stabilityWarning(0.3, 1 / 22.4, false), "");
 }
 
 TEST(TlDissipationContract, BadEntriesNameTheEntry) {
@@ -105,4 +142,8 @@ TEST(TlDissipationContract, BadEntriesNameTheEntry) {
     EXPECT_NE(negative.find(">= 0"), std::string::npos) << negative;
     const std::string missing = errorOf("type artificialViscosity;");
     EXPECT_NE(missing.find("missing keyword 'viscosity'"), std::string::npos) << missing;
+    const std::string speed = errorOf("type jst; momentumSpeed bulk;");
+    EXPECT_NE(speed.find("momentumSpeed"), std::string::npos) << speed;
+    EXPECT_NE(speed.find("pressure"), std::string::npos) << speed;  // the valid choices
+    EXPECT_NE(speed.find("shear"), std::string::npos) << speed;
 }
