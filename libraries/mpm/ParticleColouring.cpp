@@ -14,6 +14,7 @@ void ParticleColouring<Dim>::build(const CartesianGrid<Dim>& grid, std::span<con
     const auto& cells = grid.cells();
     const std::size_t cellCount = grid.cellCount();
     cellOfParticle_.resize(n);
+    stride_ = std::max<std::size_t>(1, list.stride);
     // The node layers a cell's particles reach: from the first and last entry of each particle
     // (a tensor-product block of nodes listed by increasing index: the first is its lowest
     // corner, the last its highest), relative to the particle's cell.

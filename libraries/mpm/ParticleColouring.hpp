@@ -37,8 +37,10 @@ public:
     // without synchronisation. The order within a node is fixed (see the header comment).
     template <class Body>
     void forEachParticle(Body&& body) const {
+        // The work of a colour: its share of the particles times the nodes each one touches.
+        const std::size_t work = (order_.size() / colours() + 1) * stride_;
         for (const auto& cells : colourCells_) {
-            parallelForWork(cells.size(), order_.size() / colours() + 1, [&](std::size_t c) {
+            parallelForWork(cells.size(), work, [&](std::size_t c) {
                 for (std::size_t k = cellStart_[cells[c]]; k < cellStart_[cells[c] + 1]; ++k) body(order_[k]);
             });
         }
@@ -54,6 +56,7 @@ private:
     std::vector<std::size_t> order_;                     // particles sorted by cell, stable
     std::vector<std::vector<std::size_t>> colourCells_;  // per colour: its non-empty cells, ascending
     std::array<int, Dim> period_{};
+    std::size_t stride_ = 1;
 };
 
 extern template class ParticleColouring<1>;
