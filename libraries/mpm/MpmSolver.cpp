@@ -125,16 +125,20 @@ MpmSolver<Dim>::~MpmSolver() = default;
 
 template <int Dim>
 void MpmSolver<Dim>::readMaterials() {
-    // A constitutive law per material (the total-Lagrangian laws, evaluated on the particle's F):
-    // an equation of state or a strength law is refused at its entry by the material set, which
-    // names what mpmFsi takes (the updated-Lagrangian path of impactSph is not built yet).
+    // A constitutive law per material (the total-Lagrangian laws, evaluated on the particle's F),
+    // or an equation of state with an optional strength law (impactSph's updated-Lagrangian pair,
+    // UpdatedLagrangianStress.hpp); which one, and not both, is checked there.
     MaterialModels models;
     models.method = "mpmFsi";
-    models.constitutiveLaw = ModelUse::required;
+    models.constitutiveLaw = ModelUse::optional;
+    models.equationOfState = ModelUse::optional;
+    models.strength = ModelUse::optional;
+    models.equationOfStateOrConstitutiveLaw = true;
     materials_ = std::make_unique<MaterialSet<Dim>>(materialProperties_, models);
     plastic_ = materials_->usesPlasticState();
     assignMaterials(*particles_, materials_->names(), materialProperties_);
     material_ = &particles_->integerField("material");
+    ul_ = std::make_unique<UpdatedLagrangianStress<Dim>>(*materials_, *particles_);
 }
 
 template <int Dim>
@@ -142,7 +146,7 @@ void MpmSolver<Dim>::initialiseFields() {
     const std::size_t n = x_.size();
     checkPositiveMassAndDensity(*particles_, m_, rho0_);
     for (std::size_t i = 0; i < n; ++i) {
-        const double lawRho0 = law(i).referenceDensity();
+        const double lawRho0 = ul_->referenceDensity((*material_)[i]);
         if (std::abs(rho0_[i] - lawRho0) > 1e-9 * lawRho0)
             throw materialProperties_.error(
                 "materials", "particle " + std::to_string(particles_->globalId()[i]) + " has density " +
@@ -263,9 +267,13 @@ TimeStepVote MpmSolver<Dim>::stableTimeStep() {
     double speed = 0;
     std::size_t limiting = 0;
     for (std::size_t k = 0; k < materials_->size(); ++k) {
-        const double c = (*materials_)[k].constitutiveLaw->pWaveSpeed();
-        const double s = GlobalReduce::max(
-            n, [&](std::size_t i) { return std::int64_t(k) == (*material_)[i] ? c + v_[i].norm() : 0.0; });
+        // An equation-of-state material's speed is the particle's own (its density and state).
+        const bool perParticle = ul_->handles(std::int64_t(k));
+        const double c = perParticle ? 0.0 : (*materials_)[k].constitutiveLaw->pWaveSpeed();
+        const double s = GlobalReduce::max(n, [&](std::size_t i) {
+            if (std::int64_t(k) != (*material_)[i]) return 0.0;
+            return (perParticle ? ul_->waveSpeed(i, rho0_[i]) : c) + v_[i].norm();
+        });
         if (s > speed) speed = s, limiting = k;
     }
     const double courant = time().maxCo(0.3);
@@ -409,14 +417,23 @@ void MpmSolver<Dim>::updateStress(double dt, bool advanceState) {
     const bool move = dt != 0.0;
     const auto& vI = *nodeVelocity_;
     parallelFor(x_.size(), [&](std::size_t p) {
+        Tensor<Dim> L = Tensor<Dim>::Zero();
         if (move) {
-            Tensor<Dim> L = Tensor<Dim>::Zero();
             const std::size_t base = p * stride;
             for (std::size_t k = 0; k < list_.count[p]; ++k)
                 L += vI[list_.node[base + k]] * list_.gradient[base + k].transpose();
             (*F_)[p] = (Tensor<Dim>::Identity() + dt * L) * (*F_)[p];
         }
         const Tensor<3> F3 = embed<Dim>((*F_)[p], 1.0);
+        if (ul_->handles((*material_)[p])) {
+            // Equation of state + strength: p and tau advanced with L over the step from the
+            // J of the previous step (UpdatedLagrangianStress.hpp); W = rho0 e.
+            const double Jnew = F3.determinant();
+            ul_->update(p, L, (*J_)[p], Jnew, rho0_[p], dt, advanceState, (*sigma_)[p],
+                        sigmaZZ_ ? &(*sigmaZZ_)[p] : nullptr, (*W_)[p]);
+            (*J_)[p] = Jnew;
+            return;
+        }
         const Tensor<3> H3 = cofactor(F3);
         const double J = F3.determinant();
         Tensor<3> P3;
@@ -479,6 +496,71 @@ void MpmSolver<Dim>::checkIsolated() {
 }
 
 template <int Dim>
+void MpmSolver<Dim>::checkTorn() {
+    // The extension instability of a piece (doc/methods/mpm.md section 6.2; the hanging block of
+    // section 4.2 on the 8 x 8 grid with 5 x 5 points): particles are joined when they share a
+    // grid node with N > 0, and a body (region) whose particles form more than one such piece
+    // has torn apart by more than the support. A detached row falls as a piece while every one
+    // of its particles still shares nodes with its neighbours in the row, so checkIsolated (a
+    // piece of one) misses it and the run went on until the row left the grid. Union-find over
+    // the nodes, serial, O(particles x support) per step; the pieces are this rank's (an MPI
+    // build would join them across ranks at the halo nodes).
+    if (!stopIsolated_) return;
+    const std::size_t n = x_.size();
+    const std::size_t stride = list_.stride;
+    pieceParent_.resize(grid_.nodeCount());
+    for (std::size_t i = 0; i < pieceParent_.size(); ++i) pieceParent_[i] = i;
+    auto find = [&](std::size_t a) {
+        while (pieceParent_[a] != a) a = pieceParent_[a] = pieceParent_[pieceParent_[a]];
+        return a;
+    };
+    // A particle's piece is the root of its first node of N > 0 (every particle has one: sum N = 1).
+    auto firstNode = [&](std::size_t p) {
+        const std::size_t base = p * stride;
+        for (std::size_t k = 0; k < list_.count[p]; ++k)
+            if (list_.weight[base + k] > 0) return std::size_t(list_.node[base + k]);
+        return std::size_t(list_.node[base]);
+    };
+    for (std::size_t p = 0; p < n; ++p) {
+        const std::size_t base = p * stride;
+        const std::size_t a = find(firstNode(p));
+        for (std::size_t k = 0; k < list_.count[p]; ++k)
+            if (list_.weight[base + k] > 0) {
+                const std::size_t b = find(std::size_t(list_.node[base + k]));
+                if (b != a) pieceParent_[b] = a;
+            }
+    }
+    // Each body's main piece is its largest; a particle of any other piece is torn off.
+    pieceSize_.assign(grid_.nodeCount(), 0);
+    auto& root = pieceRoot_;
+    root.resize(n);
+    for (std::size_t p = 0; p < n; ++p) ++pieceSize_[root[p] = find(firstNode(p))];
+    const auto& region = particles_->region();
+    std::int64_t regions = 0;
+    for (std::size_t p = 0; p < n; ++p) regions = std::max(regions, region[p] + 1);
+    std::vector<std::size_t> mainRoot(std::size_t(std::max<std::int64_t>(regions, 0)), 0), best(mainRoot.size(), 0);
+    for (std::size_t p = 0; p < n; ++p) {
+        if (region[p] < 0) continue;
+        const auto r = std::size_t(region[p]);
+        if (pieceSize_[root[p]] > best[r]) best[r] = pieceSize_[root[p]], mainRoot[r] = root[p];
+    }
+    auto torn = [&](std::size_t p) { return region[p] >= 0 && root[p] != mainRoot[std::size_t(region[p])]; };
+    Solver::checkState("particleToGrid", n, torn, [&](std::size_t p, double count) {
+        std::ostringstream s;
+        s << "body " << bodyName(p) << " has torn apart: particle " << particles_->globalId()[p] << " at "
+          << vectorText<Dim>(x_[p]) << " is in a piece of " << pieceSize_[root[p]]
+          << " particle(s) that shares no grid node with the body's main piece ("
+          << best[std::size_t(region[p])]
+          << " particles): numerical fracture, the extension instability of doc/methods/mpm.md section "
+             "6.2; "
+          << count
+          << " particle(s) torn off. Remedies: more particles per cell (particleGen), a coarser grid, or a "
+             "wider shape function (uGIMP, quadraticBSpline); `isolatedParticles allow;` runs on";
+        return s.str();
+    });
+}
+
+template <int Dim>
 void MpmSolver<Dim>::checkFinite(const char* phaseName) const {
     auto bad = [&](std::size_t i) {
         return !x_[i].allFinite() || !v_[i].allFinite() || !(*F_)[i].allFinite() || !((*J_)[i] > 0) ||
@@ -510,6 +592,7 @@ void MpmSolver<Dim>::step(double dt) {
         mapMassAndMomentum();
     }
     checkIsolated();
+    checkTorn();
     const auto order = scheme_->stressUpdate();
     if (order == MpmScheme::StressUpdate::first) {
         // USF: the stress from the velocity the particles bring, v_I^n = (mv)_I / m_I.
@@ -557,12 +640,12 @@ template <int Dim>
 std::vector<std::string> MpmSolver<Dim>::summary(double loopSeconds) const {
     std::vector<std::string> lines;
     char line[200];
-    std::snprintf(line, sizeof line, "particle-steps/s     %.4g (%zu P2G colours of %d",
-                  loopSeconds > 0 ? double(particleSteps_) / loopSeconds : 0.0, colouring_.colours(),
+    (void)loopSeconds;  // SolverRun prints the particle-steps/s
+    std::snprintf(line, sizeof line, "P2G colouring        %zu colours of %d", colouring_.colours(),
                   colouring_.period()[0]);
     std::string text = line;
     for (int d = 1; d < Dim; ++d) text += " x " + std::to_string(colouring_.period()[d]);
-    lines.push_back(text + " node layers)");
+    lines.push_back(text + " node layers (ParticleColouring.hpp)");
     if (removedParticles_ > 0) {
         std::snprintf(line, sizeof line,
                       "outsideGrid remove   %zu particles, %.6g kg (%.4g%% of the initial mass)",

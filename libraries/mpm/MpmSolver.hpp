@@ -26,7 +26,8 @@
 // against the vote.
 //
 // constant/materialProperties: a constitutive law per material (stVenantKirchhoff, neoHookean,
-// linearElastic, mooneyRivlin, j2Plasticity, ...), as for tlSph.
+// linearElastic, mooneyRivlin, j2Plasticity, ...), as for tlSph, or the updated-Lagrangian pair of
+// impactSph, an equationOfState with an optional strength law (UpdatedLagrangianStress.hpp).
 //
 // Fields: position, velocity, mass, density (rho0; V0 = mass / density), region (the body),
 // material, deformationGradient F (I at a fresh start), cauchyStress (SymmTensor<Dim>: particle
@@ -44,6 +45,7 @@
 #include "materials/MaterialSet.hpp"
 #include "mpm/MpmModels.hpp"
 #include "mpm/ParticleColouring.hpp"
+#include "mpm/UpdatedLagrangianStress.hpp"
 #include "solver/BodyForce.hpp"
 #include "solver/Solver.hpp"
 
@@ -89,6 +91,9 @@ private:
     // The particles outside the grid (preStep), and the isolated ones (after the mass map).
     void checkInsideGrid();
     void checkIsolated();
+    // A body torn into pieces that share no grid node (a whole row letting go): checkIsolated
+    // sees a piece of one particle only. Union-find over the nodes (pieceParent_), rank-local.
+    void checkTorn();
     void checkFinite(const char* phaseName) const;
     std::string bodyName(std::size_t i) const;
     const ConstitutiveLaw& law(std::size_t i) const {
@@ -107,6 +112,7 @@ private:
     std::unique_ptr<GridDamping> damping_;
     std::unique_ptr<BodyForce> bodyForce_;
     std::unique_ptr<MaterialSet<Dim>> materials_;
+    std::unique_ptr<UpdatedLagrangianStress<Dim>> ul_;  // equation of state + strength materials
     GridBoundaryConditionList<Dim> gridConditions_;
     double massCutoff_ = 1e-10;
     bool removeOutside_ = false;
@@ -143,6 +149,7 @@ private:
     ParticleNodeList<Dim> list_;
     ParticleColouring<Dim> colouring_;
     std::vector<Vector<Dim>> halfSize_;  // uGIMP: half the particle's extent, 0.5 V0^(1/Dim)
+    std::vector<std::size_t> pieceParent_, pieceSize_, pieceRoot_;  // checkTorn: union-find, sizes, roots
     std::int64_t particleSteps_ = 0;
 };
 
