@@ -1,9 +1,8 @@
-// Cell bucketing and colouring of the particle-to-grid sums: see ParticleColouring.hpp.
+// Tile bucketing and colouring of the particle-to-grid sums: see ParticleColouring.hpp.
 #include "mpm/ParticleColouring.hpp"
 
-#include "core/Error.hpp"
-
 #include <algorithm>
+#include <cmath>
 
 namespace mfdyn {
 
@@ -12,53 +11,46 @@ void ParticleColouring<Dim>::build(const CartesianGrid<Dim>& grid, std::span<con
                                    const ParticleNodeList<Dim>& list) {
     const std::size_t n = x.size();
     const auto& cells = grid.cells();
-    const std::size_t cellCount = grid.cellCount();
-    cellOfParticle_.resize(n);
     stride_ = std::max<std::size_t>(1, list.stride);
-    // The node layers a cell's particles reach: from the first and last entry of each particle
-    // (a tensor-product block of nodes listed by increasing index: the first is its lowest
-    // corner, the last its highest), relative to the particle's cell.
-    std::array<long, Dim> lo, hi;
-    lo.fill(0), hi.fill(0);
+    // Node layers per axis of one particle (the list is a tensor-product block), plus one for the
+    // cell's width: the tile must be at least that wide.
+    const int layers = int(std::lround(std::pow(double(stride_), 1.0 / Dim)));
+    const int width = std::max(8, layers + 1);
+    std::array<std::size_t, Dim> tiles;
+    std::size_t tileCount = 1;
+    for (int d = 0; d < Dim; ++d) {
+        period_[d] = width;
+        tiles[d] = (std::size_t(cells[d]) + std::size_t(width) - 1) / std::size_t(width);
+        tileCount *= tiles[d];
+    }
+    tileOfParticle_.resize(n);
+    tileStart_.assign(tileCount + 1, 0);
     for (std::size_t p = 0; p < n; ++p) {
         const auto cell = grid.cellOf(x[p]);
         std::size_t index = 0, stride = 1;
-        for (int d = 0; d < Dim; ++d) index += std::size_t(cell[d]) * stride, stride *= std::size_t(cells[d]);
-        cellOfParticle_[p] = index;
-        const std::uint32_t count = list.count[p];
-        if (count == 0) continue;
-        const auto first = grid.nodeIjk(list.node[p * list.stride]);
-        const auto last = grid.nodeIjk(list.node[p * list.stride + count - 1]);
         for (int d = 0; d < Dim; ++d) {
-            lo[d] = std::min<long>(lo[d], long(first[d] - cell[d]));
-            hi[d] = std::max<long>(hi[d], long(last[d] - cell[d]));
+            index += std::size_t(cell[d]) / std::size_t(width) * stride;
+            stride *= tiles[d];
         }
+        tileOfParticle_[p] = index;
+        ++tileStart_[index + 1];
     }
-    std::size_t colourCount = 1;
-    for (int d = 0; d < Dim; ++d) {
-        period_[d] = int(hi[d] - lo[d] + 1);
-        colourCount *= std::size_t(period_[d]);
-    }
-    // Stable counting sort by cell.
-    cellStart_.assign(cellCount + 1, 0);
-    for (std::size_t p = 0; p < n; ++p) ++cellStart_[cellOfParticle_[p] + 1];
-    for (std::size_t c = 0; c < cellCount; ++c) cellStart_[c + 1] += cellStart_[c];
+    // Stable counting sort by tile.
+    for (std::size_t t = 0; t < tileCount; ++t) tileStart_[t + 1] += tileStart_[t];
     order_.resize(n);
     {
-        std::vector<std::size_t> next(cellStart_.begin(), cellStart_.end() - 1);
-        for (std::size_t p = 0; p < n; ++p) order_[next[cellOfParticle_[p]]++] = p;
+        std::vector<std::size_t> next(tileStart_.begin(), tileStart_.end() - 1);
+        for (std::size_t p = 0; p < n; ++p) order_[next[tileOfParticle_[p]]++] = p;
     }
-    colourCells_.assign(colourCount, {});
-    for (std::size_t c = 0; c < cellCount; ++c) {
-        if (cellStart_[c] == cellStart_[c + 1]) continue;
-        std::size_t rest = c, colour = 0, stride = 1;
+    colourTiles_.assign(std::size_t(1) << Dim, {});
+    for (std::size_t t = 0; t < tileCount; ++t) {
+        if (tileStart_[t] == tileStart_[t + 1]) continue;
+        std::size_t rest = t, colour = 0;
         for (int d = 0; d < Dim; ++d) {
-            const std::size_t i = rest % std::size_t(cells[d]);
-            rest /= std::size_t(cells[d]);
-            colour += (i % std::size_t(period_[d])) * stride;
-            stride *= std::size_t(period_[d]);
+            colour |= ((rest % tiles[d]) & 1u) << d;
+            rest /= tiles[d];
         }
-        colourCells_[colour].push_back(c);
+        colourTiles_[colour].push_back(t);
     }
 }
 
