@@ -188,6 +188,10 @@ void MpmSolver<Dim>::initialiseFields() {
     nodeForce_ = &nodes.field<Vector<Dim>>("force");
     nodeVelocity_ = &nodes.field<Vector<Dim>>("velocity");
     nodeAcceleration_ = &nodes.field<Vector<Dim>>("acceleration");
+    if (C_) {
+        nodeX_.resize(grid_.nodeCount());
+        parallelFor(nodeX_.size(), [&](std::size_t I) { nodeX_[I] = grid_.nodePosition(std::int64_t(I)); });
+    }
     if (settings_.given("gridBoundaryConditions")) {
         gridConditions_ =
             GridBoundaryConditionList<Dim>(settings_.dictionary("gridBoundaryConditions"), grid_);
@@ -315,7 +319,7 @@ void MpmSolver<Dim>::mapMassAndMomentum() {
             const double Nm = list_.weight[base + k] * m_[p];
             mass[node] += Nm;
             if (C_)
-                momentum[node] += Nm * (v_[p] + (*C_)[p] * (grid_.nodePosition(node) - x_[p]));
+                momentum[node] += Nm * (v_[p] + (*C_)[p] * (nodeX_[node] - x_[p]));
             else
                 momentum[node] += Nm * v_[p];
         }
@@ -397,7 +401,7 @@ void MpmSolver<Dim>::gridToParticles(double dt) {
                 Tensor<Dim> B = Tensor<Dim>::Zero(), D = Tensor<Dim>::Zero();
                 for (std::size_t k = 0; k < list_.count[p]; ++k) {
                     const double N = list_.weight[base + k];
-                    const Vector<Dim> dx = grid_.nodePosition(list_.node[base + k]) - x_[p];
+                    const Vector<Dim> dx = nodeX_[list_.node[base + k]] - x_[p];
                     B += N * vI[list_.node[base + k]] * dx.transpose();
                     D += N * dx * dx.transpose();
                 }
@@ -538,7 +542,8 @@ void MpmSolver<Dim>::checkTorn() {
     const auto& region = particles_->region();
     std::int64_t regions = 0;
     for (std::size_t p = 0; p < n; ++p) regions = std::max(regions, region[p] + 1);
-    std::vector<std::size_t> mainRoot(std::size_t(std::max<std::int64_t>(regions, 0)), 0), best(mainRoot.size(), 0);
+    std::vector<std::size_t> mainRoot(std::size_t(std::max<std::int64_t>(regions, 0)), 0),
+        best(mainRoot.size(), 0);
     for (std::size_t p = 0; p < n; ++p) {
         if (region[p] < 0) continue;
         const auto r = std::size_t(region[p]);
@@ -641,11 +646,11 @@ std::vector<std::string> MpmSolver<Dim>::summary(double loopSeconds) const {
     std::vector<std::string> lines;
     char line[200];
     (void)loopSeconds;  // SolverRun prints the particle-steps/s
-    std::snprintf(line, sizeof line, "P2G colouring        %zu colours of %d", colouring_.colours(),
+    std::snprintf(line, sizeof line, "P2G colouring        %zu colours of tiles of %d", colouring_.colours(),
                   colouring_.period()[0]);
     std::string text = line;
     for (int d = 1; d < Dim; ++d) text += " x " + std::to_string(colouring_.period()[d]);
-    lines.push_back(text + " node layers (ParticleColouring.hpp)");
+    lines.push_back(text + " cells (ParticleColouring.hpp)");
     if (removedParticles_ > 0) {
         std::snprintf(line, sizeof line,
                       "outsideGrid remove   %zu particles, %.6g kg (%.4g%% of the initial mass)",

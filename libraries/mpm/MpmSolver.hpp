@@ -149,6 +149,7 @@ private:
     ParticleNodeList<Dim> list_;
     ParticleColouring<Dim> colouring_;
     std::vector<Vector<Dim>> halfSize_;  // uGIMP: half the particle's extent, 0.5 V0^(1/Dim)
+    std::vector<Vector<Dim>> nodeX_;     // the node positions (APIC's x_I - x_p), made once
     std::vector<std::size_t> pieceParent_, pieceSize_, pieceRoot_;  // checkTorn: union-find, sizes, roots
     std::int64_t particleSteps_ = 0;
 };

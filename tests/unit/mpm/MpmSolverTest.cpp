@@ -274,7 +274,7 @@ TEST(MpmTransfers, RigidRotationAngularMomentumPerVelocityUpdate) {
 }
 
 // flipPic with flipFraction 1 is FLIP and with 0 is PIC, bit for bit (v = r FLIP + (1 - r) PIC), and
-// 0.5 lies between them: the disk of the rotation test, 50 steps.
+// 0.5 damps the spin between them: a spinning block, 50 steps.
 TEST(MpmTransfers, FlipPicBlendsFlipAndPic) {
     auto spin = [](const Vector<2>& x) { return Vector<2>(-2.0 * (x[1] - 0.5), 2.0 * (x[0] - 0.5)); };
     auto velocities = [&](const std::string& update, const std::string& extra) {
@@ -296,15 +296,17 @@ TEST(MpmTransfers, FlipPicBlendsFlipAndPic) {
                zero = velocities("flipPic", "flipFraction 0;\n");
     const auto half = velocities("flipPic", "flipFraction 0.5;\n");
     ASSERT_EQ(flip.size(), one.size());
-    double between = 0, apart = 0;
+    double apart = 0, kFlip = 0, kPic = 0, kHalf = 0;  // sum |v|^2: the particles' masses are equal
     for (std::size_t i = 0; i < flip.size(); ++i) {
         EXPECT_EQ(flip[i], one[i]) << i;
         EXPECT_EQ(pic[i], zero[i]) << i;
         apart = std::max(apart, (flip[i] - pic[i]).norm());
-        between = std::max(between, (half[i] - 0.5 * (flip[i] + pic[i])).norm());
+        kFlip += flip[i].squaredNorm(), kPic += pic[i].squaredNorm(), kHalf += half[i].squaredNorm();
     }
-    EXPECT_GT(apart, 1e-3);           // FLIP and PIC do differ after 50 steps
-    EXPECT_LT(between, 0.1 * apart);  // and the blend lies near their mean (not exactly: the paths differ)
+    EXPECT_GT(apart, 1e-3);  // FLIP and PIC do differ after 50 steps
+    // PIC damps the spin most, FLIP least, the blend in between.
+    EXPECT_LT(kPic, kHalf);
+    EXPECT_LT(kHalf, kFlip);
 }
 
 // Bad input: each an InputError naming the file and line and the valid choices.
