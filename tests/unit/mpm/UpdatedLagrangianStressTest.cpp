@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -219,6 +220,56 @@ TEST(UpdatedLagrangianStress, ElasticCompressionCycleReturnsItsEnergy) {
     const double M = rho0 * c0 * c0 + 4.0 / 3.0 * G;
     EXPECT_NEAR(peak, 0.5 * M * eps * eps, 0.02 * 0.5 * M * eps * eps);
     EXPECT_LT(std::abs(W), 1e-4 * peak);
+}
+
+TEST(UpdatedLagrangianStress, ImpactSphTutorialMaterialsAreTakenUnchanged) {
+    // The material dictionaries of impactSph's Taylor bar and hypervelocity impacts, read from the
+    // tutorials as they are (Mie-Grueneisen + vonMises, deviator three, #includeEtc constants):
+    // each material takes this path, and one plane-strain step of uniaxial compression gives
+    // p > 0 (compression), sigma_xx < sigma_yy < 0, and sigma_zz = sigma_yy (under uniaxial strain
+    // the implied tau_zz equals tau_yy).
+    for (const char* tutorial : {"taylorBar", "hviAlAl", "hviAlCu", "hviAlPb"}) {
+        SCOPED_TRACE(tutorial);
+        const Dictionary dict = Dictionary::read(std::string(MFDYN_TUTORIALS_DIR) + "/impactSph/" + tutorial +
+                                                 "/constant/materialProperties");
+        const MaterialModels models = OneParticle<2>::mpm();
+        MaterialSet<2> materials(dict, models);
+        ParticleSet<2> particles(materials.size());
+        auto& material = particles.integerField("material");
+        for (std::size_t k = 0; k < materials.size(); ++k) material[k] = std::int64_t(k);
+        std::fill(particles.scalarField("jacobian").begin(), particles.scalarField("jacobian").end(), 1.0);
+        UpdatedLagrangianStress<2> path(materials, particles);
+        ASSERT_TRUE(path.any());
+        Tensor<2> L = Tensor<2>::Zero();
+        L(0, 0) = -1e4;
+        const double dt = 1e-8, J = 1 - 1e-4;
+        for (std::size_t k = 0; k < materials.size(); ++k) {
+            ASSERT_TRUE(path.handles(std::int64_t(k))) << materials.names()[k];
+            const double rho0 = path.referenceDensity(std::int64_t(k));
+            SymmTensor<2> sigma;
+            double zz = 0, W = 0;
+            path.update(k, L, 1.0, J, rho0, dt, true, sigma, &zz, W);
+            const double p = particles.scalarField("pressure")[k];
+            EXPECT_GT(p, 0.0) << materials.names()[k];
+            EXPECT_LT(sigma(0, 0), sigma(1, 1)) << materials.names()[k];
+            EXPECT_LT(sigma(1, 1), 0.0) << materials.names()[k];
+            EXPECT_NEAR(zz, sigma(1, 1), 1e-9 * p) << materials.names()[k];
+            EXPECT_GT(W, 0.0) << materials.names()[k];
+        }
+    }
+}
+
+TEST(UpdatedLagrangianStress, ATemperatureLawStartsAtItsInitialTemperature) {
+    // johnsonCook carries a temperature: a fresh start sets it to the law's Troom (300 K here),
+    // and a particle file that gives one keeps it.
+    const std::string text =
+        "materials { steel { rho0 7850; c0 4570; s 1.49; gamma0 2.17; shearModulus 81.8e9;\n"
+        "equationOfState { type mieGruneisen; }\nstrength { type johnsonCook; A 350e6; B 275e6; n 0.36; "
+        "C 0.022; m 1; epsilonDot0 1; Troom 300; Tmelt 1800; specificHeat 477; } } }";
+    OneParticle<3> fresh(text);
+    ASSERT_TRUE(fresh.particles.hasField("temperature"));
+    EXPECT_EQ(fresh.particles.scalarField("temperature")[0], 300.0);
+    EXPECT_TRUE(fresh.particles.hasField("plasticStrain"));
 }
 
 TEST(UpdatedLagrangianStress, MaterialsItRefusesAreErrorsAtTheEntry) {
