@@ -424,8 +424,15 @@ void MpmSolver<Dim>::updateStress(double dt, bool advanceState) {
         Tensor<Dim> L = Tensor<Dim>::Zero();
         if (move) {
             const std::size_t base = p * stride;
-            for (std::size_t k = 0; k < list_.count[p]; ++k)
-                L += vI[list_.node[base + k]] * list_.gradient[base + k].transpose();
+            // Component by component, the same sums in the same order as L += v_I grad N^T, which
+            // GCC compiled to a 3 x 3 stack temporary whose reload stalled on store forwarding
+            // (bench/mpm/README.md: a third of the Taylor bar's time).
+            for (std::size_t k = 0; k < list_.count[p]; ++k) {
+                const Vector<Dim>& v = vI[list_.node[base + k]];
+                const Vector<Dim>& g = list_.gradient[base + k];
+                for (int b = 0; b < Dim; ++b)
+                    for (int a = 0; a < Dim; ++a) L(a, b) += v[a] * g[b];
+            }
             (*F_)[p] = (Tensor<Dim>::Identity() + dt * L) * (*F_)[p];
         }
         const Tensor<3> F3 = embed<Dim>((*F_)[p], 1.0);
