@@ -727,11 +727,26 @@ void SphSolver<Dim>::checkState(const char* phaseName) const {
           << p_[i] << ", sound speed " << c_[i] << ", h " << h_[i];
         if (e_) s << ", e " << (*e_)[i];
         s << ", |v| " << v_[i].norm() << "; " << count << " particles affected";
-        if (std::isfinite(rho_[i]) && !(c_[i] > 0))
-            s << "\n    the equation of state gives c^2 <= 0 at this state (density " << rho_[i]
-              << "): the state has left the model's range of validity (for mieGruneisen, strong "
-                 "compression with little heating; try hugoniot linearUsUp, a smaller deltaT or more "
-                 "dissipation)";
+        if (std::isfinite(rho_[i]) && !(c_[i] > 0)) {
+            // The two ways out of an equation of state's range call for different remedies: a
+            // compressed, little-heated state (the constant-Gamma factor of mieGruneisen) or an
+            // expanded one (strong tension: the uncut pressure far below zero, which a particle
+            // under a minimumPressure cut-off reaches by expanding freely).
+            const double rho0 = materials_[material_[i]].eos->referenceDensity();
+            s << "\n    the equation of state gives c^2 <= 0 at this state (density " << rho_[i];
+            if (rho_[i] < rho0)
+                s << ", " << rho_[i] / rho0 << " of rho0 " << rho0
+                  << "): the state has left the model's range of validity in tension (for "
+                     "mieGruneisen, the uncut pressure far below zero; a minimumPressure cut-off clamps "
+                     "P, not c^2, so a particle held at the cut-off expands freely until c^2 turns "
+                     "negative: spalled material, which no failure model removes yet; without the "
+                     "cut-off the tension holds it back)";
+            else
+                s << ", " << rho_[i] / rho0 << " of rho0 " << rho0
+                  << "): the state has left the model's range of validity in compression (for "
+                     "mieGruneisen, strong compression with little heating; try hugoniot linearUsUp, "
+                     "gruneisen constantRhoGamma, a smaller deltaT or more dissipation)";
+        }
         return s.str();
     });
 }
