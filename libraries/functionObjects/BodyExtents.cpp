@@ -20,6 +20,7 @@
 
 #include "core/Error.hpp"
 #include "core/Parallel.hpp"
+#include "functionObjects/RegionLookup.hpp"
 #include "particles/ParticleSetBase.hpp"
 
 #include <algorithm>
@@ -63,16 +64,7 @@ BodyExtents::BodyExtents(const KeywordValues& values, const std::string& name, c
     if (values.given("region")) {
         requireField(dict, "region", "region");
         regionName_ = values.word("region");
-        const auto* set = dynamic_cast<const ParticleSetBase*>(&context.fields());
-        const std::vector<std::string> names = set ? set->regionNames : std::vector<std::string>{};
-        const auto it = std::find(names.begin(), names.end(), regionName_);
-        if (it == names.end()) {
-            std::string valid;
-            for (const auto& n : names) valid += " " + n;
-            throw dict.error("region", "no region '" + regionName_ + "' in this run; regions:" +
-                                           (valid.empty() ? std::string(" none") : valid));
-        }
-        region_ = it - names.begin();
+        region_ = regionIndex(dict, "region", regionName_, context);
     }
     if (values.given("reference")) {
         reference_ = values.vector("reference");

@@ -15,6 +15,7 @@
 #include "functionObjects/BodyMomentum.hpp"
 
 #include "core/Parallel.hpp"
+#include "functionObjects/RegionLookup.hpp"
 #include "particles/ParticleSetBase.hpp"
 
 #include <algorithm>
@@ -39,20 +40,11 @@ BodyMomentum::BodyMomentum(const KeywordValues& values, const std::string& name,
     : FunctionObject(values, name, context) {
     const Dictionary& dict = values.dict();
     const int dim = context.dimension();
-    const auto* set = dynamic_cast<const ParticleSetBase*>(&context.fields());
-    regionNames_ = set ? set->regionNames : std::vector<std::string>{};
+    regionNames_ = runRegionNames(context);
     requireField(dict, "type", "region");
     if (values.given("regions")) {
-        for (const auto& r : values.words("regions")) {
-            const auto it = std::find(regionNames_.begin(), regionNames_.end(), r);
-            if (it == regionNames_.end()) {
-                std::string valid;
-                for (const auto& n : regionNames_) valid += " " + n;
-                throw dict.error("regions", "no region '" + r + "' in this run; regions:" +
-                                                (valid.empty() ? std::string(" none") : valid));
-            }
-            regions_.push_back(it - regionNames_.begin());
-        }
+        for (const auto& r : values.words("regions"))
+            regions_.push_back(regionIndex(dict, "regions", r, context));
     } else {
         for (std::size_t r = 0; r < regionNames_.size(); ++r) regions_.push_back(std::int64_t(r));
         if (regions_.empty()) throw dict.error("type", "bodyMomentum: this run's particles name no region");

@@ -19,6 +19,7 @@
 
 #include "core/Error.hpp"
 #include "core/Parallel.hpp"
+#include "functionObjects/RegionLookup.hpp"
 #include "particles/ParticleSetBase.hpp"
 
 #include <algorithm>
@@ -52,16 +53,7 @@ LowestPoint::LowestPoint(const KeywordValues& values, const std::string& name, c
     if (values.given("region")) {
         requireField(dict, "region", "region");
         regionName_ = values.word("region");
-        const auto* set = dynamic_cast<const ParticleSetBase*>(&context.fields());
-        const std::vector<std::string> names = set ? set->regionNames : std::vector<std::string>{};
-        const auto it = std::find(names.begin(), names.end(), regionName_);
-        if (it == names.end()) {
-            std::string valid;
-            for (const auto& n : names) valid += " " + n;
-            throw dict.error("region", "no region '" + regionName_ + "' in this run; regions:" +
-                                           (valid.empty() ? std::string(" none") : valid));
-        }
-        region_ = it - names.begin();
+        region_ = regionIndex(dict, "region", regionName_, context);
     }
     down_[dim - 1] = -1;
     if (values.given("direction")) {
