@@ -66,6 +66,8 @@ KeywordSchema MpmSolver<Dim>::keywords() {
         .orDefault("FLIP")
         .identifier("gridDamping", "damping of the grid momentum (a gridDamping type)")
         .orDefault("none")
+        .identifier("pressureSmoothing", "the fluids' pressure checkerboard (a pressureSmoothing type)")
+        .orDefault("none")
         .scalar("massCutoff", "kg", "nodes lighter than this get v = a = 0 (note 2.4)")
         .greaterThan(0)
         .orDefault(1e-10)
@@ -102,6 +104,7 @@ MpmSolver<Dim>::MpmSolver(SolverRun& run)
     scheme_ = selectByWord<MpmScheme>(properties_, "scheme", "USL");
     velocityUpdate_ = selectByWord<VelocityUpdate>(properties_, "velocityUpdate", "FLIP");
     damping_ = selectByWord<GridDamping>(properties_, "gridDamping", "none");
+    smoothing_ = selectByWord<PressureSmoothing<Dim>>(properties_, "pressureSmoothing", "none");
     massCutoff_ = settings_.scalar("massCutoff");
     removeOutside_ = settings_.word("outsideGrid") == "remove";
     stopIsolated_ = settings_.word("isolatedParticles") == "stop";
@@ -204,7 +207,8 @@ void MpmSolver<Dim>::initialiseFields() {
     std::ostringstream s;
     s << "mpmFsi: " << grid_.describe() << "; shapeFunction " << shape_->type() << ", scheme "
       << scheme_->type() << ", velocityUpdate " << velocityUpdate_->describe() << ", gridDamping "
-      << damping_->describe() << ", massCutoff " << massCutoff_ << " kg, " << n << " particles";
+      << damping_->describe() << ", pressureSmoothing " << smoothing_->describe() << ", massCutoff "
+      << massCutoff_ << " kg, " << n << " particles";
     Log::info(s.str());
 }
 
@@ -285,6 +289,15 @@ TimeStepVote MpmSolver<Dim>::stableTimeStep() {
     if (speed > 0)
         vote = {courant * grid_.smallestCellSize() / speed,
                 "CFL (maxCo dx / (c + |v|), material " + materials_->names()[limiting] + ")"};
+    if (ul_->any()) {
+        // The viscous limit rho dx^2 / (4 mu) of the fluids (note 2.7 [D]), a global vote.
+        const double dx = grid_.smallestCellSize();
+        const double viscous = GlobalReduce::min(n, [&](std::size_t i) {
+            return ul_->handles((*material_)[i]) ? ul_->viscousTimeStep(i, rho0_[i], dx)
+                                                 : std::numeric_limits<double>::infinity();
+        });
+        if (viscous < vote.deltaT) vote = {viscous, "viscous (rho dx^2 / (4 mu))"};
+    }
     if (bodyForce_)
         if (auto force = bodyForce_->stableTimeStep(); force.deltaT < vote.deltaT) vote = force;
     return vote;
@@ -477,6 +490,24 @@ void MpmSolver<Dim>::updateStress(double dt, bool advanceState) {
 }
 
 template <int Dim>
+void MpmSolver<Dim>::smoothPressure() {
+    if (!smoothing_->active() || !ul_->any()) return;
+    auto timed = phase("stress");
+    PressureSmoothingFields<Dim> f;
+    f.position = x_;
+    f.mass = m_;
+    f.referenceDensity = rho0_;
+    f.material = *material_;
+    f.deformationGradient = *F_;
+    f.jacobian = *J_;
+    f.cauchyStress = *sigma_;
+    if (sigmaZZ_) f.cauchyStressZZ = *sigmaZZ_;
+    f.smoothed = [this](std::int64_t k) { return ul_->isFluid(k); };
+    f.pressureAt = [this](std::size_t p, double J) { return ul_->pressureAt(p, J, rho0_[p]); };
+    smoothing_->apply(grid_, f);
+}
+
+template <int Dim>
 void MpmSolver<Dim>::checkIsolated() {
     if (!stopIsolated_) return;
     const auto& mass = *nodeMass_;
@@ -610,6 +641,7 @@ void MpmSolver<Dim>::step(double dt) {
         // USF: the stress from the velocity the particles bring, v_I^n = (mv)_I / m_I.
         nodeVelocityFromMomentum(t);
         updateStress(dt, true);
+        smoothPressure();
     }
     {
         auto timed = phase("particleToGrid");
@@ -623,7 +655,10 @@ void MpmSolver<Dim>::step(double dt) {
         mapMassAndMomentum();
         nodeVelocityFromMomentum(t + dt);
     }
-    if (order != MpmScheme::StressUpdate::first) updateStress(dt, true);
+    if (order != MpmScheme::StressUpdate::first) {
+        updateStress(dt, true);
+        smoothPressure();
+    }
     particleSteps_ += std::int64_t(x_.size());
     checkFinite("step");
 }

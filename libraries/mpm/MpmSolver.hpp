@@ -14,6 +14,7 @@
 //     scheme          USL;             // USL | USF | MUSL (MpmModels.hpp)
 //     velocityUpdate  FLIP;            // FLIP | PIC | flipPic (flipFraction r) | APIC
 //     gridDamping     none;            // none | massProportional (dampingCoefficient alpha_d, 1/s)
+//     pressureSmoothing none;          // fluids' pressure checkerboard (PressureSmoothing.hpp)
 //     massCutoff      1e-10;           // kg: nodes lighter than this get v = a = 0
 //     outsideGrid     stop;            // stop | remove (a particle leaving the grid)
 //     isolatedParticles stop;          // stop | allow (extension instability: below)
@@ -45,6 +46,7 @@
 #include "materials/MaterialSet.hpp"
 #include "mpm/MpmModels.hpp"
 #include "mpm/ParticleColouring.hpp"
+#include "mpm/PressureSmoothing.hpp"
 #include "mpm/UpdatedLagrangianStress.hpp"
 #include "solver/BodyForce.hpp"
 #include "solver/Solver.hpp"
@@ -88,6 +90,8 @@ private:
     void gridToParticles(double dt);
     // L = sum_I v_I (x) grad N_Ip from the node velocity, F <- (I + dt L) F, sigma and W.
     void updateStress(double dt, bool advanceState);
+    // After the stress update: the `pressureSmoothing` model on the fluid particles (none: nothing).
+    void smoothPressure();
     // The particles outside the grid (preStep), and the isolated ones (after the mass map).
     void checkInsideGrid();
     void checkIsolated();
@@ -110,6 +114,7 @@ private:
     std::unique_ptr<MpmScheme> scheme_;
     std::unique_ptr<VelocityUpdate> velocityUpdate_;
     std::unique_ptr<GridDamping> damping_;
+    std::unique_ptr<PressureSmoothing<Dim>> smoothing_;
     std::unique_ptr<BodyForce> bodyForce_;
     std::unique_ptr<MaterialSet<Dim>> materials_;
     std::unique_ptr<UpdatedLagrangianStress<Dim>> ul_;  // equation of state + strength materials

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace mfdyn {
 
@@ -134,6 +135,23 @@ double UpdatedLagrangianStress<Dim>::waveSpeed(std::size_t p, double rho0) const
     const double c2 = std::max(std::isfinite(c) ? c * c : 0.0, floorC2_[k]);
     const double shear = m.strength ? 4.0 / 3.0 * m.strength->shearModulus() / rho : 0.0;
     return std::sqrt(c2 + shear);
+}
+
+template <int Dim>
+bool UpdatedLagrangianStress<Dim>::isFluid(std::int64_t k) const {
+    return handles(k) && !materials_[std::size_t(k)].strength;
+}
+
+template <int Dim>
+double UpdatedLagrangianStress<Dim>::pressureAt(std::size_t p, double J, double rho0) const {
+    const auto& m = materials_[std::size_t((*material_)[p])];
+    return m.eos->pressure(rho0 / J, (*e_)[p]);
+}
+
+template <int Dim>
+double UpdatedLagrangianStress<Dim>::viscousTimeStep(std::size_t /*p*/, double /*rho0*/,
+                                                     double /*dx*/) const {
+    return std::numeric_limits<double>::infinity();  // no material has a viscosity yet
 }
 
 template class UpdatedLagrangianStress<1>;

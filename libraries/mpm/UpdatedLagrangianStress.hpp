@@ -79,6 +79,16 @@ public:
     // The p-wave speed of particle p for the CFL vote (see the header comment).
     double waveSpeed(std::size_t p, double rho0) const;
 
+    // Material k is a fluid: an equation of state and no strength law (its deviatoric stress, if
+    // any, is viscous). Pressure smoothing (PressureSmoothing.hpp) acts on fluids only.
+    bool isFluid(std::int64_t k) const;
+    // The equation of state's pressure of particle p at jacobian J (density rho0 / J), with the
+    // particle's present specific internal energy; no state is changed.
+    double pressureAt(std::size_t p, double J, double rho0) const;
+    // The viscous time-step limit of particle p, rho dx^2 / (4 mu) (doc/methods/mpm.md 2.7), with
+    // rho = rho0 / J; infinity for a material without viscosity.
+    double viscousTimeStep(std::size_t p, double rho0, double dx) const;
+
 private:
     const MaterialSet<Dim>& materials_;
     std::vector<char> ul_;
