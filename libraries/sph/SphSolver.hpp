@@ -12,6 +12,7 @@
 //     dissipation     { type riemann; velocity (1 2); density (0.5 2); energy (0.1 2); }
 //     densityRateLimit 0.2;   // Δt ≤ ξ ρ/|dρ/dt| as well as the Courant limit (0: off)
 //     neighbourSkin    0.2;   // Verlet skin as a fraction of the initial median support radius
+//     mirrorGhosts     withList;      // or everyStep (the ghost layer and the list rebuilt each step)
 //     momentum         variational;   // or difference (non-conservative, for comparison)
 //     integrator       leapfrog;      // or predictorCorrector (midpoint rule, two rate evaluations)
 //     artificialStress { epsilon 0.3; exponent 4; }   // against tensile instability (strength only)
@@ -24,7 +25,8 @@
 // symmetryPlane, rigidPlanarWall, mirrorPlane on regions or shapes; applied to accelerations after
 // the rates, to velocities after each leapfrog update and to positions after the drift (mirrorPlane
 // ghosts take part in every sum as read-only neighbours: positions mirrored, velocity and stress
-// reflected, the rest copied from their source particle; regenerated every step).
+// reflected, the rest copied from their source particle; the layer is built at neighbour-list
+// rebuilds and re-placed from its sources in between, `mirrorGhosts withList`).
 // Particles carry `material` (an index into the particle file's material names) or, without it,
 // take the material named like their region, or the only material there is.
 //
@@ -77,6 +79,8 @@ private:
     void initialiseFields();
     void ensureRates();
     void addGhosts();
+    void buildGhostLayer(double hMax, double t);
+    bool placeKeptGhosts(const GhostBlock<Dim>& layer);
     void removeGhosts();
     void updateNeighbours();
     void computeEquationOfState();
@@ -108,6 +112,7 @@ private:
     double omegaMin_;
     bool differenceForm_;
     bool predictorCorrector_;
+    bool ghostsEveryStep_;  // mirrorGhosts everyStep (see keptGhosts_)
     // Per material its equation of state (required) and strength law (optional; null when none or
     // one without stress); a constitutive law is refused (MaterialSet.hpp).
     MaterialSet<Dim> materials_;
@@ -158,6 +163,18 @@ private:
     BoundaryConditionList<Dim> boundaries_;
     // Mirror ghosts of this step live in the particle set's ghost range [ownedCount(), size())
     // while the rates are computed, and are cleared before anything else sees the particles.
+    // With `mirrorGhosts withList` the same layer (keptGhosts_, built one support plus the skin
+    // thick) is put back each step, so that the candidate list survives: ghostActive_ marks,
+    // per particle, the owned ones and the kept ghosts this step's own layer has (the others are
+    // left out of every sum); ghostOffset_ re-places a ghost the layer of this step lacks by the
+    // affine image Q x_source + offset (a mirror keeps distances, so the skin test stays exact).
+    GhostBlock<Dim> keptGhosts_;
+    std::vector<Vector<Dim>> ghostOffset_;
+    std::vector<char> ghostActive_;
+    bool filterGhosts_ = false;  // some kept ghost is not in this step's layer
+    bool ghostLayerKept_ = false;
+    std::uint64_t topologyAfterGhosts_ = 0;  // the particle set's version after removeGhosts()
+    std::size_t ghostLayerBuilds_ = 0;
     // Rows of the candidate list or, once selectNeighbours() has run this step, of the pairs
     // within either support (SphPairLoop.hpp).
     SphNeighbourRows neighbours_;
