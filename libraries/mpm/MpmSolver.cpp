@@ -136,6 +136,7 @@ void MpmSolver<Dim>::readMaterials() {
     models.constitutiveLaw = ModelUse::optional;
     models.equationOfState = ModelUse::optional;
     models.strength = ModelUse::optional;
+    models.viscosity = ModelUse::optional;  // a fluid's deviator (materials/viscosity/)
     models.equationOfStateOrConstitutiveLaw = true;
     materials_ = std::make_unique<MaterialSet<Dim>>(materialProperties_, models);
     plastic_ = materials_->usesPlasticState();
