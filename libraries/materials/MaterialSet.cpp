@@ -21,15 +21,22 @@ std::vector<std::string> materialNames(const Dictionary& materialProperties) {
 
 namespace {
 
-const char* modelKeys[] = {"equationOfState", "strength", "constitutiveLaw"};
+constexpr int modelCount = 4;
+const char* modelKeys[modelCount] = {"equationOfState", "strength", "constitutiveLaw", "viscosity"};
+
+ModelUse modelUse(const MaterialModels& models, int k) {
+    const ModelUse uses[modelCount] = {models.equationOfState, models.strength, models.constitutiveLaw,
+                                       models.viscosity};
+    return uses[k];
+}
 
 // "an equationOfState and optionally a strength": what the method takes, for messages.
 std::string takes(const MaterialModels& models) {
-    const ModelUse uses[] = {models.equationOfState, models.strength, models.constitutiveLaw};
     std::string required, optional;
-    for (int k = 0; k < 3; ++k) {
-        std::string& list = uses[k] == ModelUse::required ? required : optional;
-        if (uses[k] == ModelUse::refused) continue;
+    for (int k = 0; k < modelCount; ++k) {
+        const ModelUse use = modelUse(models, k);
+        std::string& list = use == ModelUse::required ? required : optional;
+        if (use == ModelUse::refused) continue;
         list += (list.empty() ? "" : ", ") + std::string(modelKeys[k]);
     }
     std::string s;
@@ -46,14 +53,17 @@ template <int Dim>
 MaterialSet<Dim>::MaterialSet(const Dictionary& materialProperties, const MaterialModels& models)
     : names_(materialNames(materialProperties)) {
     const Dictionary& all = materialProperties.subDict("materials");
-    const ModelUse uses[] = {models.equationOfState, models.strength, models.constitutiveLaw};
     for (const auto& name : names_) {
         const Dictionary& dict = all.subDict(name);
-        for (int k = 0; k < 3; ++k) {
-            if (uses[k] == ModelUse::refused && dict.found(modelKeys[k]))
+        for (int k = 0; k < modelCount; ++k) {
+            const ModelUse use = modelUse(models, k);
+            if (use == ModelUse::refused && dict.found(modelKeys[k]))
                 throw dict.error(modelKeys[k],
-                                 models.method + " takes no " + modelKeys[k] + "; it takes " + takes(models));
-            if (uses[k] == ModelUse::required && !dict.findDict(modelKeys[k]))
+                                 models.method + " takes no " + modelKeys[k] + "; it takes " + takes(models) +
+                                     (k == 3 ? " (a viscous fluid, viscosity { type newtonian; mu ...; }, "
+                                               "runs in mpmFsi)"
+                                             : ""));
+            if (use == ModelUse::required && !dict.findDict(modelKeys[k]))
                 throw InputError(dict.where(), dict.scope(),
                                  "material '" + name + "' names no " + modelKeys[k] +
                                      " { type ...; }: " + models.method + " takes " + takes(models));
@@ -90,6 +100,25 @@ MaterialSet<Dim>::MaterialSet(const Dictionary& materialProperties, const Materi
             m.constitutiveLaw = ConstitutiveLaw::New(*law);
             usesPlasticState_ = usesPlasticState_ || m.constitutiveLaw->usesPlasticState();
             add(m.constitutiveLaw->describe());
+        }
+        if (const Dictionary* viscosity = dict.findDict("viscosity")) {
+            // A viscosity is a fluid's deviator: beside a strength law that carries stress, or a
+            // constitutive law, the body would have two deviatoric stresses.
+            if (m.strength)
+                throw dict.error("viscosity", "material '" + name +
+                                                  "' is a fluid given a strength law (strength " +
+                                                  m.strength->type() +
+                                                  ") as well as a viscosity: a viscosity is a fluid's "
+                                                  "deviatoric stress; give an equationOfState with either "
+                                                  "a viscosity (a fluid) or a strength (a solid)");
+            if (m.constitutiveLaw)
+                throw dict.error("viscosity", "material '" + name +
+                                                  "' names a viscosity on a constitutiveLaw material: a "
+                                                  "viscosity goes with an equationOfState (a fluid), "
+                                                  "never with a constitutiveLaw");
+            m.viscosity = Viscosity::New(*viscosity);
+            anyViscosity_ = true;
+            add("viscosity " + m.viscosity->type());
         }
         Log::info("Material " + name + ": " + line);
         materials_.push_back(std::move(m));

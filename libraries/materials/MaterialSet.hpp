@@ -7,19 +7,25 @@
 //         water { equationOfState { type tait; ... } }                             // a fluid
 //         steel { equationOfState { type mieGruneisen; } strength { type vonMises; } }
 //         rubber { constitutiveLaw { type neoHookean; rho0 1100; mu 5e6; kappa 5e7; } }
+//         oil   { equationOfState { type tait; rho0 900; B 1e6; } viscosity { type newtonian; mu 0.1; } }
 //     }
 //
 // A method states which models it takes (MaterialModels): impactSph an equation of state and an
 // optional strength law, tlSph a constitutive law, MPM an equation of state or a constitutive law
-// per material (a fluid next to a solid in one run). A model the method does not take is an input
+// per material (a fluid next to a solid in one run) and a viscosity for a fluid. A model the method does not take is an input
 // error at its entry, naming the method and what it takes; a missing required one is an error at
 // the material. The set answers which fields the models need (energy, stress, plastic strain,
 // temperature, plastic state), so that a solver allocates only those, and logs one line per
 // material. Which particle is made of which material is solver/MaterialAssignment's business
 // (assignMaterials(particles, set.names(), materialProperties)).
+//
+// A viscosity (materials/viscosity/Viscosity.hpp) is a fluid's deviatoric stress: on a material
+// with a strength law that carries stress, or with a constitutive law, it is an error at the
+// viscosity entry (two deviators for one body); `strength { type none; }` beside it is allowed.
 #include "materials/constitutive/ConstitutiveLaw.hpp"
 #include "materials/equationOfState/EquationOfState.hpp"
 #include "materials/strength/Strength.hpp"
+#include "materials/viscosity/Viscosity.hpp"
 
 #include <memory>
 #include <string>
@@ -43,6 +49,8 @@ struct MaterialModels {
     // Each material must name an equation of state or a constitutive law (or both), where each
     // alone is optional: a method that runs fluids beside solids.
     bool equationOfStateOrConstitutiveLaw = false;
+    // Last, so that the aggregate initialisers written before it stay valid.
+    ModelUse viscosity = ModelUse::refused;  // mpmFsi's fluids only (optional there)
 };
 
 template <int Dim>
@@ -54,6 +62,7 @@ public:
         std::unique_ptr<EquationOfState> eos;              // null when the material names none
         std::unique_ptr<Strength<Dim>> strength;           // null when none, or one that carries no stress
         std::unique_ptr<ConstitutiveLaw> constitutiveLaw;  // null when none
+        std::unique_ptr<Viscosity> viscosity;              // null when none (inviscid)
     };
 
     // Reads materialProperties' `materials` (materialNames' rules: each entry a dictionary, at
@@ -71,6 +80,8 @@ public:
     bool needsEnergy() const { return needsEnergy_; }
     // Some material carries a deviatoric stress (a strength law other than `none`).
     bool anyStrength() const { return anyStrength_; }
+    // Some material has a viscosity.
+    bool anyViscosity() const { return anyViscosity_; }
     bool usesPlasticStrain() const { return usesPlasticStrain_; }
     bool usesTemperature() const { return usesTemperature_; }
     // Some constitutive law carries a plastic state (Cp^-1 and the equivalent plastic strain).
@@ -80,7 +91,7 @@ private:
     std::vector<Material> materials_;
     std::vector<std::string> names_;
     bool needsEnergy_ = false, anyStrength_ = false, usesPlasticStrain_ = false, usesTemperature_ = false,
-         usesPlasticState_ = false;
+         usesPlasticState_ = false, anyViscosity_ = false;
 };
 
 }  // namespace mfdyn

@@ -1,5 +1,6 @@
 // mpmFsi's updated-Lagrangian material path (UpdatedLagrangianStress.hpp, where the equations
-// are): equation of state + strength law per particle, from the solver's velocity gradient and J.
+// are): equation of state + strength law (or viscosity) per particle, from the solver's velocity
+// gradient and J.
 #include "mpm/UpdatedLagrangianStress.hpp"
 
 #include "core/Dictionary.hpp"
@@ -88,8 +89,17 @@ void UpdatedLagrangianStress<Dim>::update(std::size_t p, const Tensor<Dim>& L, d
     double pressure, c;
     SymmTensor<Dim> zero{};
     SymmTensor<Dim>& tau = law ? (*tau_)[p] : zero;
+    const Tensor<Dim> D = 0.5 * (L + L.transpose());
+    // A fluid's viscous deviator from the present rate, tau_v = 2 mu dev D with the trace of the
+    // 3D rate (D_zz = 0 below 3D: plane strain), so tau_v,zz = -2 mu tr D / 3 (Newtonian.cpp).
+    const double mu = m.viscosity ? m.viscosity->dynamicViscosity(rho, e) : 0.0;
+    const double trD = D.trace();
+    Tensor<Dim> tauV = Tensor<Dim>::Zero();
+    if (mu > 0) {
+        tauV = 2.0 * mu * D;
+        for (int d = 0; d < Dim; ++d) tauV(d, d) -= 2.0 * mu * trD / 3.0;
+    }
     if (advance && dt > 0) {
-        const Tensor<Dim> D = 0.5 * (L + L.transpose());
         const SymmTensor<Dim> tauOld = tau;
         if (law) {
             typename Strength<Dim>::Fields f;
@@ -102,8 +112,11 @@ void UpdatedLagrangianStress<Dim>::update(std::size_t p, const Tensor<Dim>& L, d
             law->update(f, dt);
         }
         // tau:D with the step average of tau, per unit mass with the average specific volume.
+        // The viscous work tau_v:D = 2 mu dev D:dev D >= 0 (the out-of-plane tau_v,zz does no work,
+        // D_zz = 0) is added the same way: dissipation into e, so that m e + kinetic stays closed.
         const double deviatoric =
-            dt * (0.5 * (tauOld.full() + tau.full())).cwiseProduct(D).sum() * (Jold + Jnew) / (2.0 * rho0);
+            dt * ((0.5 * (tauOld.full() + tau.full())).cwiseProduct(D).sum() + tauV.cwiseProduct(D).sum()) *
+            (Jold + Jnew) / (2.0 * rho0);
         const double dV = (Jnew - Jold) / rho0;  // change of the specific volume 1/rho
         const double pOld = (*p_)[p];
         const double ePredicted = e - pOld * dV + deviatoric;
@@ -114,14 +127,14 @@ void UpdatedLagrangianStress<Dim>::update(std::size_t p, const Tensor<Dim>& L, d
     eos.evaluate(1, &rho, &e, &pressure, &c);
     (*p_)[p] = pressure;
     (*c_)[p] = c;
-    Tensor<Dim> s = tau.full();
+    Tensor<Dim> s = tau.full() + tauV;
     for (int d = 0; d < Dim; ++d) s(d, d) -= pressure;
     sigma = SymmTensor<Dim>::fromFull(s);
     if (sigmaZZ) {
         // The out-of-plane normal deviator implied by tr tau = 0 (Strength.hpp), 0 without it.
         double tauZZ = 0;
         if (law && law->impliedComponents() > 0) tauZZ = -tau.full().trace() / law->impliedComponents();
-        *sigmaZZ = -pressure + tauZZ;
+        *sigmaZZ = -pressure + tauZZ - 2.0 * mu * trD / 3.0;
     }
     W = rho0 * e;
 }
@@ -149,9 +162,13 @@ double UpdatedLagrangianStress<Dim>::pressureAt(std::size_t p, double J, double 
 }
 
 template <int Dim>
-double UpdatedLagrangianStress<Dim>::viscousTimeStep(std::size_t /*p*/, double /*rho0*/,
-                                                     double /*dx*/) const {
-    return std::numeric_limits<double>::infinity();  // no material has a viscosity yet
+double UpdatedLagrangianStress<Dim>::viscousTimeStep(std::size_t p, double rho0, double dx) const {
+    const auto& m = materials_[std::size_t((*material_)[p])];
+    const double mu = m.viscosity ? m.viscosity->maximumViscosity() : 0.0;
+    if (!(mu > 0)) return std::numeric_limits<double>::infinity();
+    // The explicit diffusion limit of the momentum equation, nu dt / dx^2 <= 1/4 (note 2.7).
+    const double rho = rho0 / (*J_)[p];
+    return rho * dx * dx / (4.0 * mu);
 }
 
 template class UpdatedLagrangianStress<1>;

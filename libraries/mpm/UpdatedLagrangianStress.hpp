@@ -9,6 +9,8 @@
 //         copper { #includeEtc "materials/copperTaylorBar"  s 1.5; gamma0 2.0;
 //                  equationOfState { type mieGruneisen; }  strength { type vonMises; deviator three; } }
 //         water  { equationOfState { type tait; rho0 1000; c0 1480; gamma 7; } }   // a fluid: no tau
+//         oil    { equationOfState { type tait; rho0 900; B 1e6; gamma 7; }
+//                  viscosity { type newtonian; mu 0.1; } }                          // a viscous fluid
 //     }
 //
 // Per particle p, over a step dt with the velocity gradient L of the solver (L = sum_I v_I (x)
@@ -27,10 +29,14 @@
 //               with pbar = p^n): exact for a barotropic law (P(rho) only), second order otherwise.
 //               The pressure work then equals -int p dV of the discrete volume, so the stored
 //               energy sum m e balances the kinetic energy to the order of the step.
+//   viscosity   a fluid with a viscosity (materials/viscosity/, never beside a strength law) has
+//               the viscous deviator tau_v = 2 mu dev D of the present L, dev D = D - tr D/3 I
+//               (Stokes' hypothesis; D_zz = 0 below 3D), not stored; its work tau_v:D enters
+//               the deviatoric energy term above beside tau:D (dissipation into e)
 //   pressure    p^{n+1} = P(rho^{n+1}, e^{n+1}) and c from the equation of state
-//   stress      sigma = -p I + tau; below 3D (plane strain) sigma_zz = -p + tau_zz with tau_zz the
-//               component implied by tr tau = 0 under `deviator three` (Strength.hpp), 0 under
-//               `deviator dimension`
+//   stress      sigma = -p I + tau + tau_v; below 3D (plane strain) sigma_zz = -p + tau_zz
+//               - 2 mu tr D / 3 with tau_zz the component implied by tr tau = 0 under `deviator
+//               three` (Strength.hpp), 0 under `deviator dimension`
 //   stored      W = rho0 e (per reference volume), so that the solver's sum V0 W is sum m e, the
 //               internal energy conservedQuantities adds to the kinetic energy (plastic work
 //               included: tau:D holds it, Strength.hpp)
