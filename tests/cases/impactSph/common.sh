@@ -54,3 +54,20 @@ runTutorial() {
     MFDYN_BUILD="$BUILD" "$dest/Allrun" > "$dest/log.Allrun" 2>&1 || fail "$1/Allrun failed: $(tail -n 20 "$dest/log.Allrun")"
     echo "$dest"
 }
+
+# sameOutline <case a> <case b> <relative tolerance> <name a> <name b>: the outline function
+# object's rim x_max, y_max, top z_max and lowest z_min of the two runs (last row) agree.
+sameOutline() {
+    local csv=postProcessing/outline/0/fieldMinMax.csv q a b
+    for q in position_x_max position_y_max position_z_max position_z_min; do
+        a=$(column "$1/$csv" "$q")
+        b=$(column "$2/$csv" "$q")
+        less "$(relErr "$a" "$b")" "$3" || fail "$q: $4 $a, $5 $b (relative difference $(relErr "$a" "$b"))"
+    done
+}
+
+# finalEnergy <case>: the conservedQuantities totalEnergy of the last row, 15 digits.
+finalEnergy() {
+    awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "totalEnergy") c = i; next } { e = $c } END { printf "%.15g", e }' \
+        "$1/postProcessing/conserved/0/conservedQuantities.csv"
+}

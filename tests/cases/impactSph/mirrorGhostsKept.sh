@@ -43,15 +43,10 @@ less "$(awk -v r="$rk" -v s="$sk" 'BEGIN { print r / s }')" 0.1 ||
 layers=$(awk '/mirror-ghost layers/ { print $3 }' "$kept/log.impactSph")
 [ -n "$layers" ] || fail "no mirror-ghost layer count in the summary"
 [ "$layers" -le "$rk" ] || fail "$layers ghost layers built but only $rk list rebuilds (each layer rebuilds the list)"
+sameOutline "$kept" "$every" 1e-10 withList everyStep
 csv=postProcessing/outline/0/fieldMinMax.csv
-for q in position_x_max position_y_max position_z_max position_z_min; do
-    a=$(column "$kept/$csv" "$q")
-    b=$(column "$every/$csv" "$q")
-    less "$(relErr "$a" "$b")" 1e-10 || fail "$q: withList $a, everyStep $b (relative difference $(relErr "$a" "$b"))"
-done
 t=$(column "$kept/$csv" time)
 less 1.999e-5 "$t" || fail "withList stopped at t = $t"
-energy() { awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "totalEnergy") c = i; next } { e = $c } END { printf "%.15g", e }' "$1/postProcessing/conserved/0/conservedQuantities.csv"; }
-ek=$(energy "$kept"); ee=$(energy "$every")
+ek=$(finalEnergy "$kept"); ee=$(finalEnergy "$every")
 less "$(relErr "$ek" "$ee")" 1e-10 || fail "total energy: withList $ek, everyStep $ee"
 pass "withList: $rk list rebuilds ($layers ghost layers) in $sk steps, $tk s; everyStep: $re in $se, $te s; rim $(column "$kept/$csv" position_x_max) m, top $(column "$kept/$csv" position_z_max) m, energy $ek J (everyStep $ee J)"

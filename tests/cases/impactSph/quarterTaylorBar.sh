@@ -25,14 +25,9 @@ csv=postProcessing/outline/0/fieldMinMax.csv
 nq=$(awk '/^Read [0-9]+ particles/ { print $2 }' "$quarter/log.impactSph")
 nr=$(awk '/^Read [0-9]+ particles/ { print $2 }' "$rod/log.impactSph")
 [ "$((4 * nq))" -eq "$nr" ] || fail "the rod has $nr particles, not 4 x $nq"
-for q in position_x_max position_y_max position_z_max position_z_min; do
-    a=$(column "$quarter/$csv" "$q")
-    b=$(column "$rod/$csv" "$q")
-    less "$(relErr "$a" "$b")" 1e-8 || fail "$q: quarter $a, rod $b (relative difference $(relErr "$a" "$b"))"
-done
+sameOutline "$quarter" "$rod" 1e-8 quarter rod
 t=$(column "$quarter/$csv" time)
 less 1.999e-5 "$t" || fail "quarter stopped at t = $t"
-energy() { awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) if ($i == "totalEnergy") c = i; next } { e = $c } END { print e }' "$1/postProcessing/conserved/0/conservedQuantities.csv"; }
-eq=$(energy "$quarter"); er=$(energy "$rod")
+eq=$(finalEnergy "$quarter"); er=$(finalEnergy "$rod")
 less "$(relErr "$(awk -v e="$eq" 'BEGIN { printf "%.15g", 4 * e }')" "$er")" 1e-8 || fail "total energy: 4 x quarter $eq against rod $er"
 pass "quarter ($nq particles, $tq s) = rod ($nr particles, $tr s) at 20 µs: rim $(column "$rod/$csv" position_x_max) m, top $(column "$rod/$csv" position_z_max) m, energy 4 x $eq = $er J"
