@@ -9,7 +9,9 @@
 // map Q kept per ghost (R = I - 2 n n^T for the image across one plane of unit normal n; the
 // product R2 R1 for the image across plane 2 of an image across plane 1, as at a corner), a
 // vector maps to Q a and a tensor to Q T Q^T.
-// Ghosts are regenerated every step (doc/methods/sph-impact.md section 4), never integrated.
+// Ghosts are never integrated: a solver makes them from the current state, each step or (impactSph's
+// `mirrorGhosts withList`) at its list rebuilds, re-placing them from their sources in between
+// (doc/methods/sph-impact.md section 4.3).
 //
 // Parity: the image across a skew-symmetric plane (the odd extension of the motion) is the
 // negated mirror image, parity -1; across a mirror or symmetry plane parity +1. A ghost's parity

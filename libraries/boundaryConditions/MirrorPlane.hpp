@@ -1,5 +1,7 @@
 #pragma once
-// `mirrorPlane`: a layer of mirror-image ghost particles behind a plane, regenerated each step.
+// `mirrorPlane`: a layer of mirror-image ghost particles behind a plane, made from the current
+// state whenever the solver asks (impactSph: at its list rebuilds, or each step with
+// `mirrorGhosts everyStep`).
 #include "boundaryConditions/BoundaryCondition.hpp"
 #include "boundaryConditions/Plane.hpp"
 
