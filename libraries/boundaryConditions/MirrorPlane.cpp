@@ -1,7 +1,8 @@
 // mirrorPlane: ghost particles mirrored through a plane, made (when the solver asks: impactSph at
 // its list rebuilds, SphSolver.cpp) from the particles within a layer of thickness 3 h_max
-// (Zisis 2017 section 5.5, the shock-bubble tube; doc/methods/sph-impact.md section 4.3; Libersky, Petschek, Carney, Hipp & Allahdadi 1993 for mirror ghosts in
-// SPH). For a source particle at x with d = (x - point)·n, 0 < d < thickness:
+// (Zisis 2017 section 5.5, the shock-bubble tube; doc/methods/sph-impact.md section 4.3;
+// Libersky, Petschek, Carney, Hipp & Allahdadi 1993 for mirror ghosts in SPH). For a source
+// particle at x with d = (x - point)·n, 0 < d < thickness:
 //     x_ghost = x - 2 d n                                   (exact mirror image)
 //     v_ghost = v - 2 (v·n) n        free slip (default): normal velocity reversed, tangential kept
 //     v_ghost = -v                   noSlip yes: the wall velocity (zero) at the plane
