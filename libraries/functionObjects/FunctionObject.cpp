@@ -144,6 +144,12 @@ void FunctionObjectList::execute(bool solverWrites) {
     for (auto& object : objects_) object->execute(solverWrites);
 }
 
+std::string FunctionObjectList::stopRequest() const {
+    for (const auto& object : objects_)
+        if (object->stopRequested()) return "function object '" + object->name() + "' (" + object->stopReason() + ")";
+    return {};
+}
+
 std::vector<ErrorNorm> FunctionObjectList::errorNorms() const {
     std::vector<ErrorNorm> all;
     for (const auto& object : objects_)

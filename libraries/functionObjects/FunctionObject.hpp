@@ -89,6 +89,11 @@ public:
     const WriteStamp& lastWrite() const { return lastWrite_; }
     // Lines for the end-of-run summary (conservation drift, ...).
     virtual std::vector<std::string> summary() const { return {}; }
+    // Whether the run should end cleanly after this step (planeCrossing's stopAtCrossing): SolverRun
+    // asks after the function objects ran, writes the state and exits with status 0, logging
+    // stopReason().
+    virtual bool stopRequested() const { return false; }
+    virtual std::string stopReason() const { return {}; }
 
 protected:
     const RunContext& context() const { return context_; }
@@ -135,6 +140,8 @@ public:
     std::vector<ErrorNorm> errorNorms() const;
     std::vector<std::string> summary() const;
     std::size_t size() const { return objects_.size(); }
+    // "<name>: <reason>" of the first object that asks the run to stop; empty when none does.
+    std::string stopRequest() const;
     // Every error against a reference, as the summary prints them (SolverRun::run).
     struct ErrorRecord {
         std::string name;  // <object>/<field>/<L1|L2|Linf> or <object>/<quantity>

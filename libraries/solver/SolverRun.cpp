@@ -358,6 +358,19 @@ int SolverRun::run(Solver& solver) {
             Log::info(progressLine(time, elapsed, startTime) + "  [" + vote.reason + "]" +
                       (writing ? "  wrote " + time.timeName() : ""));
         }
+        if (const std::string request = stopSignal ? std::string() : functions.stopRequest(); !request.empty()) {
+            // A function object ends the run (planeCrossing's stopAtCrossing): a result, not a
+            // failure, so the state is written (and the objects that write with it run) and the
+            // status is 0.
+            if (!writing) {
+                write(solver);
+                functions.execute(true);
+            }
+            Log::info("\nStopped by " + request + " at t = " + time.timeName() + ", step " +
+                      std::to_string(time.timeIndex()) + "; the state is written in " +
+                      (case_.root() / time.timeName()).string() + "/");
+            break;
+        }
         if (stopSignal) {
             Log::info(std::string("\nStopped by ") + SignalHandler::name(stopSignal) +
                       " at t = " + time.timeName() + ", step " + std::to_string(time.timeIndex()) +
