@@ -2,7 +2,17 @@
 // pressureSmoothing: the family that damps the pressure checkerboard of weakly compressible fluids
 // on material points (issue 18, item 4), selected by a word in constant/mpmProperties:
 //
-//     pressureSmoothing  none;     // none (default) | ... (the models document themselves)
+//     pressureSmoothing  none;     // none (default) | cellPressure | cellJacobian
+//
+//   none          each particle's pressure from its own J (the thesis)
+//   cellPressure  sigma_p += (p_p - pbar_c) I, pbar_c the volume-weighted mean pressure of the
+//                 fluid's particles in the cell (pressureSmoothing/CellPressure.cpp)
+//   cellJacobian  F_p <- (Jbar_c / J_p)^(1/dim) F_p, J_p <- Jbar_c, the reference-volume-weighted
+//                 mean J of the cell, and the pressure of the equation of state at Jbar_c
+//                 (pressureSmoothing/CellJacobian.cpp)
+//
+// Both average over the particles of one fluid material in one grid cell (the solver's grid);
+// particles of other materials, and solids, are left alone.
 //
 // A model is applied once per step, after the stress update, to the particles of fluid materials
 // (an equation of state without a strength law): it may replace each particle's pressure, or its
@@ -36,6 +46,9 @@ struct PressureSmoothingFields {
     std::function<bool(std::int64_t)> smoothed;
     // The equation of state's pressure of particle p at jacobian J (its present energy).
     std::function<double(std::size_t, double)> pressureAt;
+    // Optional: the particles' stored pressure field (written and used as p^n by the next energy
+    // update); a model that changes a particle's pressure writes it here when it is given.
+    std::span<double> pressure;
 };
 
 template <int Dim>
