@@ -20,6 +20,13 @@
 // sum to zero on the grid (sum_I grad N_Ip = 0 for each particle); P2G conserves mass and momentum
 // exactly (sum_I N_Ip = 1); FLIP and PIC lose angular momentum in the transfers, APIC keeps it.
 // The P2G sums are deterministic for any thread count (ParticleColouring.hpp).
+//
+// contact multiField (contact/MultiFieldContact.cpp; Bardenhagen et al. 2001): the P2G above per
+// body b (m_bI, (mv)_bI, f_bI, and the mass gradient g_bI = sum_p m_p grad N_Ip that gives the
+// body's normal), the grid solve per body, then the contact correction of v_bI and a_bI where
+// bodies meet, then each body's grid conditions; particle p takes x, v (G2P) and L from its own
+// body's v_bI and a_bI. USF and MUSL correct the velocity they take L from in the same way. With
+// linear hats and one body this is the single field exactly; singleField allocates none of it.
 #include "mpm/MpmSolver.hpp"
 
 #include "core/KeywordSchema.hpp"
@@ -37,6 +44,7 @@
 #include <cstdio>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 namespace mfdyn {
 
@@ -68,6 +76,8 @@ KeywordSchema MpmSolver<Dim>::keywords() {
         .orDefault("none")
         .identifier("pressureSmoothing", "the fluids' pressure checkerboard (a pressureSmoothing type)")
         .orDefault("none")
+        .identifier("contact", "how bodies meet on the grid (a contact type: singleField, multiField)")
+        .orDefault("singleField")
         .scalar("massCutoff", "kg", "nodes lighter than this get v = a = 0 (note 2.4)")
         .greaterThan(0)
         .orDefault(1e-10)
@@ -105,6 +115,7 @@ MpmSolver<Dim>::MpmSolver(SolverRun& run)
     velocityUpdate_ = selectByWord<VelocityUpdate>(properties_, "velocityUpdate", "FLIP");
     damping_ = selectByWord<GridDamping>(properties_, "gridDamping", "none");
     smoothing_ = selectByWord<PressureSmoothing<Dim>>(properties_, "pressureSmoothing", "none");
+    contact_ = selectByWord<Contact<Dim>>(properties_, "contact", "singleField");
     massCutoff_ = settings_.scalar("massCutoff");
     removeOutside_ = settings_.word("outsideGrid") == "remove";
     stopIsolated_ = settings_.word("isolatedParticles") == "stop";
@@ -196,6 +207,27 @@ void MpmSolver<Dim>::initialiseFields() {
         nodeX_.resize(grid_.nodeCount());
         parallelFor(nodeX_.size(), [&](std::size_t I) { nodeX_[I] = grid_.nodePosition(std::int64_t(I)); });
     }
+    if (contact_->multiField()) {
+        // A body is a region (particleGen's): its id indexes the per-body node fields.
+        region_ = &std::as_const(*particles_).region();
+        const auto& region = *region_;
+        for (std::size_t i = 0; i < n; ++i)
+            if (region[i] < 0)
+                throw properties_.error("contact",
+                                        "particle " + std::to_string(particles_->globalId()[i]) +
+                                            " has no body (region " + std::to_string(region[i]) +
+                                            "): contact multiField needs every particle in a region");
+        const double last = GlobalReduce::max(n, [&](std::size_t i) { return double(region[i]); });
+        const std::size_t bodies =
+            std::max(particles_->regionNames.size(), std::size_t(std::max(last, 0.0)) + 1);
+        bodyNames_ = particles_->regionNames;
+        for (std::size_t b = bodyNames_.size(); b < bodies; ++b)
+            bodyNames_.push_back("region " + std::to_string(b));
+        bodyNames_.resize(bodies);
+        contact_->bind(bodyNames_);
+        multi_ = true;
+        allocateBodyFields();
+    }
     if (settings_.given("gridBoundaryConditions")) {
         gridConditions_ =
             GridBoundaryConditionList<Dim>(settings_.dictionary("gridBoundaryConditions"), grid_);
@@ -208,8 +240,9 @@ void MpmSolver<Dim>::initialiseFields() {
     std::ostringstream s;
     s << "mpmFsi: " << grid_.describe() << "; shapeFunction " << shape_->type() << ", scheme "
       << scheme_->type() << ", velocityUpdate " << velocityUpdate_->describe() << ", gridDamping "
-      << damping_->describe() << ", pressureSmoothing " << smoothing_->describe() << ", massCutoff "
-      << massCutoff_ << " kg, " << n << " particles";
+      << damping_->describe() << ", pressureSmoothing " << smoothing_->describe() << ", contact "
+      << contact_->describe() << (multi_ ? " over " + std::to_string(bodyNames_.size()) + " bodies" : "")
+      << ", massCutoff " << massCutoff_ << " kg, " << n << " particles";
     Log::info(s.str());
 }
 
@@ -326,6 +359,35 @@ void MpmSolver<Dim>::mapMassAndMomentum() {
     std::fill(mass.begin(), mass.end(), 0.0);
     std::fill(momentum.begin(), momentum.end(), Vector<Dim>::Zero());
     const std::size_t stride = list_.stride;
+    if (multi_) {
+        for (std::size_t b = 0; b < bodyMass_.size(); ++b) {
+            std::fill(bodyMass_[b].begin(), bodyMass_[b].end(), 0.0);
+            std::fill(bodyMomentum_[b].begin(), bodyMomentum_[b].end(), Vector<Dim>::Zero());
+            std::fill(bodyGradient_[b].begin(), bodyGradient_[b].end(), Vector<Dim>::Zero());
+            std::fill(bodyPosition_[b].begin(), bodyPosition_[b].end(), Vector<Dim>::Zero());
+        }
+        // One colour's particles touch disjoint nodes, hence disjoint (body, node) entries too.
+        colouring_.forEachParticle([&](std::size_t p) {
+            const auto b = std::size_t((*region_)[p]);
+            auto& bm = bodyMass_[b];
+            auto& bp = bodyMomentum_[b];
+            auto& bg = bodyGradient_[b];
+            auto& bx = bodyPosition_[b];
+            const std::size_t base = p * stride;
+            for (std::size_t k = 0; k < list_.count[p]; ++k) {
+                const auto node = list_.node[base + k];
+                const double Nm = list_.weight[base + k] * m_[p];
+                const Vector<Dim> vp = C_ ? Vector<Dim>(v_[p] + (*C_)[p] * (nodeX_[node] - x_[p])) : v_[p];
+                mass[node] += Nm;
+                momentum[node] += Nm * vp;
+                bm[node] += Nm;
+                bp[node] += Nm * vp;
+                bg[node] += m_[p] * list_.gradient[base + k];
+                bx[node] += Nm * x_[p];
+            }
+        });
+        return;
+    }
     colouring_.forEachParticle([&](std::size_t p) {
         const std::size_t base = p * stride;
         for (std::size_t k = 0; k < list_.count[p]; ++k) {
@@ -345,6 +407,23 @@ void MpmSolver<Dim>::mapForces(double t) {
     auto& force = *nodeForce_;
     std::fill(force.begin(), force.end(), Vector<Dim>::Zero());
     const std::size_t stride = list_.stride;
+    if (multi_) {
+        for (auto& f : bodyNodeForce_) std::fill(f.begin(), f.end(), Vector<Dim>::Zero());
+        colouring_.forEachParticle([&](std::size_t p) {
+            Vector<Dim> b = Vector<Dim>::Zero();
+            if (bodyForce_) bodyForce_->acceleration(x_[p].data(), t, b.data());
+            const Tensor<Dim> Vsigma = ((*J_)[p] * m_[p] / rho0_[p]) * (*sigma_)[p].full();
+            const Vector<Dim> mb = m_[p] * b;
+            auto& bf = bodyNodeForce_[std::size_t((*region_)[p])];
+            const std::size_t base = p * stride;
+            for (std::size_t k = 0; k < list_.count[p]; ++k) {
+                const Vector<Dim> f = list_.weight[base + k] * mb - Vsigma * list_.gradient[base + k];
+                force[list_.node[base + k]] += f;
+                bf[list_.node[base + k]] += f;
+            }
+        });
+        return;
+    }
     colouring_.forEachParticle([&](std::size_t p) {
         Vector<Dim> b = Vector<Dim>::Zero();
         if (bodyForce_) bodyForce_->acceleration(x_[p].data(), t, b.data());
@@ -366,6 +445,20 @@ void MpmSolver<Dim>::nodeVelocityFromMomentum(double t) {
         v[I] = mass[I] >= massCutoff_ ? Vector<Dim>(momentum[I] / mass[I]) : Vector<Dim>::Zero();
     });
     if (!gridConditions_.empty()) gridConditions_.apply(grid_, v, nullptr, t, 0.0);
+    if (!multi_) return;
+    for (std::size_t b = 0; b < bodyMass_.size(); ++b) {
+        const auto& mb = bodyMass_[b];
+        const auto& pb = bodyMomentum_[b];
+        auto& vb = bodyVelocity_[b];
+        parallelFor(vb.size(), [&](std::size_t I) {
+            vb[I] = mb[I] >= massCutoff_ ? Vector<Dim>(pb[I] / mb[I]) : Vector<Dim>::Zero();
+        });
+    }
+    // USF's and MUSL's velocity for L: the bodies' velocities corrected where they meet (no
+    // acceleration, no force recorded), then the grid conditions.
+    correctContact(0.0, false, t);
+    for (auto& vb : bodyVelocity_)
+        if (!gridConditions_.empty()) gridConditions_.apply(grid_, vb, nullptr, t, 0.0);
 }
 
 template <int Dim>
@@ -377,6 +470,32 @@ void MpmSolver<Dim>::solveGrid(double dt, double t) {
     const auto& momentum = *nodeMomentum_;
     const auto& force = *nodeForce_;
     const double alpha = damping_->coefficient();
+    if (multi_) {
+        // Each body's field on its own (note 2.4 as below), the contact correction where bodies
+        // meet, then each body's grid conditions (the walls have the last word). The shared
+        // field's v and a are not needed (writeGrid writes its mass, momentum and force).
+        for (std::size_t b = 0; b < bodyMass_.size(); ++b) {
+            const auto& mb = bodyMass_[b];
+            const auto& pb = bodyMomentum_[b];
+            const auto& fb = bodyNodeForce_[b];
+            auto& vb = bodyVelocity_[b];
+            auto& ab = bodyAcceleration_[b];
+            parallelFor(vb.size(), [&](std::size_t I) {
+                if (mb[I] >= massCutoff_) {
+                    ab[I] = (fb[I] - alpha * pb[I]) / mb[I];
+                    vb[I] = pb[I] / mb[I] + dt * ab[I];
+                } else {
+                    ab[I] = Vector<Dim>::Zero();
+                    vb[I] = Vector<Dim>::Zero();
+                }
+            });
+        }
+        correctContact(dt, true, t);
+        if (!gridConditions_.empty())
+            for (std::size_t b = 0; b < bodyMass_.size(); ++b)
+                gridConditions_.apply(grid_, bodyVelocity_[b], &bodyAcceleration_[b], t + dt, dt);
+        return;
+    }
     // Note 2.4 with the signs of the author's code: a = (f - alpha mv) / m, v = mv / m + a dt.
     parallelFor(v.size(), [&](std::size_t I) {
         if (mass[I] >= massCutoff_) {
@@ -393,11 +512,13 @@ void MpmSolver<Dim>::solveGrid(double dt, double t) {
 template <int Dim>
 void MpmSolver<Dim>::gridToParticles(double dt) {
     auto timed = phase("gridToParticle");
-    const auto& vI = *nodeVelocity_;
-    const auto& aI = *nodeAcceleration_;
     const double r = velocityUpdate_->flipFraction();
     const std::size_t stride = list_.stride;
     parallelFor(x_.size(), [&](std::size_t p) {
+        // The particle's own body's field under multiField, the shared one else.
+        const Vector<Dim>* vI = velocityOf(p);
+        const Vector<Dim>* aI =
+            multi_ ? bodyAcceleration_[std::size_t((*region_)[p])].data() : nodeAcceleration_->data();
         const std::size_t base = p * stride;
         Vector<Dim> vPic = Vector<Dim>::Zero(), aFlip = Vector<Dim>::Zero();
         for (std::size_t k = 0; k < list_.count[p]; ++k) {
@@ -433,10 +554,10 @@ void MpmSolver<Dim>::updateStress(double dt, bool advanceState) {
     auto timed = phase("stress");
     const std::size_t stride = list_.stride;
     const bool move = dt != 0.0;
-    const auto& vI = *nodeVelocity_;
     parallelFor(x_.size(), [&](std::size_t p) {
         Tensor<Dim> L = Tensor<Dim>::Zero();
         if (move) {
+            const Vector<Dim>* vI = velocityOf(p);
             const std::size_t base = p * stride;
             // Component by component, the same sums in the same order as L += v_I grad N^T, which
             // GCC compiled to a 3 x 3 stack temporary whose reload stalled on store forwarding
@@ -520,7 +641,9 @@ void MpmSolver<Dim>::checkIsolated() {
         for (std::size_t k = 0; k < list_.count[p]; ++k) {
             const double N = list_.weight[base + k];
             if (N <= 0) continue;
-            const double m = mass[list_.node[base + k]];
+            // multiField: its own body's mass (another body's particles do not hold it together).
+            const double m = multi_ ? bodyMass_[std::size_t((*region_)[p])][list_.node[base + k]]
+                                    : mass[list_.node[base + k]];
             if (m - N * m_[p] > 1e-12 * m) return false;
         }
         return true;
@@ -628,6 +751,57 @@ void MpmSolver<Dim>::checkFinite(const char* phaseName) const {
 }
 
 template <int Dim>
+void MpmSolver<Dim>::allocateBodyFields() {
+    const std::size_t bodies = bodyNames_.size(), nodes = grid_.nodeCount();
+    bodyMass_.assign(bodies, std::vector<double>(nodes, 0.0));
+    for (auto* f : {&bodyMomentum_, &bodyGradient_, &bodyPosition_, &bodyNodeForce_, &bodyVelocity_,
+                    &bodyAcceleration_})
+        f->assign(bodies, std::vector<Vector<Dim>>(nodes, Vector<Dim>::Zero()));
+}
+
+template <int Dim>
+void MpmSolver<Dim>::correctContact(double dt, bool afterForce, double t) {
+    ContactNodes<Dim> nodes;
+    nodes.mass = &bodyMass_;
+    nodes.massGradient = &bodyGradient_;
+    nodes.massPosition = &bodyPosition_;
+    nodes.velocity = &bodyVelocity_;
+    nodes.acceleration = afterForce ? &bodyAcceleration_ : nullptr;
+    nodes.massCutoff = massCutoff_;
+    nodes.cellSize = grid_.smallestCellSize();
+    const std::vector<Vector<Dim>> force = contact_->correct(nodes, dt);
+    if (!afterForce || force.empty()) return;
+    // One row a step: time, then per pair (a, b) the force on a from b and its magnitude.
+    const std::size_t B = bodyNames_.size();
+    if (!contactCsv_) {
+        std::vector<std::string> columns{"time"};
+        const char* axis[] = {"x", "y", "z"};
+        for (std::size_t a = 0; a < B; ++a)
+            for (std::size_t b = a + 1; b < B; ++b) {
+                const std::string pair = bodyNames_[a] + "_" + bodyNames_[b];
+                for (int d = 0; d < Dim; ++d) columns.push_back(pair + "_" + axis[d]);
+                columns.push_back(pair + "_magnitude");
+            }
+        contactCsv_ = std::make_unique<CsvFile>(
+            runCase().postProcessing() / "contact" / startTimeName() / "contactForces.csv", columns, t);
+        contactRow_.reserve(columns.size());
+    }
+    contactRow_.assign(1, t + dt);
+    for (std::size_t a = 0; a < B; ++a)
+        for (std::size_t b = a + 1; b < B; ++b) {
+            const Vector<Dim>& F = force[Contact<Dim>::pairIndex(a, b, B)];
+            for (int d = 0; d < Dim; ++d) contactRow_.push_back(F[d]);
+            contactRow_.push_back(F.norm());
+            if (F.norm() > peakContactForce_) {
+                peakContactForce_ = F.norm();
+                peakContactTime_ = t + dt;
+                peakContactPair_ = bodyNames_[a] + " - " + bodyNames_[b];
+            }
+        }
+    contactCsv_->row(contactRow_);
+}
+
+template <int Dim>
 void MpmSolver<Dim>::step(double dt) {
     const double t = time().value();
     evaluateShapeFunctions();
@@ -694,6 +868,17 @@ std::vector<std::string> MpmSolver<Dim>::summary(double loopSeconds) const {
     std::string text = line;
     for (int d = 1; d < Dim; ++d) text += " x " + std::to_string(colouring_.period()[d]);
     lines.push_back(text + " cells (ParticleColouring.hpp)");
+    if (multi_) {
+        if (peakContactPair_.empty())
+            std::snprintf(line, sizeof line, "contact multiField   no contact force between %zu bodies",
+                          bodyNames_.size());
+        else
+            std::snprintf(
+                line, sizeof line,
+                "contact multiField   peak pair force %.6g N (per m of depth in 2D; %s) at t = %.6g s",
+                peakContactForce_, peakContactPair_.c_str(), peakContactTime_);
+        lines.push_back(line);
+    }
     if (removedParticles_ > 0) {
         std::snprintf(line, sizeof line,
                       "outsideGrid remove   %zu particles, %.6g kg (%.4g%% of the initial mass)",

@@ -15,6 +15,8 @@
 //     velocityUpdate  FLIP;            // FLIP | PIC | flipPic (flipFraction r) | APIC
 //     gridDamping     none;            // none | massProportional (dampingCoefficient alpha_d, 1/s)
 //     pressureSmoothing none;          // fluids' pressure checkerboard (PressureSmoothing.hpp)
+//     contact         singleField;     // singleField | multiField (multiFieldCoeffs { friction 0; }):
+//                                      // one node field for all bodies, or one per body (contact/)
 //     massCutoff      1e-10;           // kg: nodes lighter than this get v = a = 0
 //     outsideGrid     stop;            // stop | remove (a particle leaving the grid)
 //     isolatedParticles stop;          // stop | allow (extension instability: below)
@@ -36,10 +38,18 @@
 // plane strain), jacobian (det F), storedEnergyDensity (W per reference volume);
 // affineVelocity C_p with APIC; plasticDeformation, plasticStrain with a plastic law.
 //
+// With `contact multiField;` each body (particleGen region) has its own node mass, momentum,
+// mass gradient, force, velocity and acceleration; each body's grid is solved and given the grid
+// conditions on its own, the contact model corrects the velocities where bodies meet, and each
+// particle takes x, v and L from its own body's field. The contact force of each body pair is
+// written every step to postProcessing/contact/<startTime>/contactForces.csv; its peak is in
+// the summary.
+//
 // Diagnoses, never NaN: a particle outside the grid stops the run naming it, its body, the time
 // and the remedies (or, with `outsideGrid remove;`, is removed with the mass lost logged); a
 // particle whose grid nodes carry no mass of any other particle (separated from its body by more
 // than the support: numerical fracture, the extension instability of note 6.2) stops the run.
+#include "functionObjects/CsvFile.hpp"
 #include "grid/CartesianGrid.hpp"
 #include "grid/gridBoundaryConditions/GridBoundaryCondition.hpp"
 #include "grid/shapeFunctions/ShapeFunction.hpp"
@@ -48,6 +58,7 @@
 #include "mpm/ParticleColouring.hpp"
 #include "mpm/PressureSmoothing.hpp"
 #include "mpm/UpdatedLagrangianStress.hpp"
+#include "mpm/contact/Contact.hpp"
 #include "solver/BodyForce.hpp"
 #include "solver/Solver.hpp"
 
@@ -99,6 +110,14 @@ private:
     // sees a piece of one particle only. Union-find over the nodes (pieceParent_), rank-local.
     void checkTorn();
     void checkFinite(const char* phaseName) const;
+    // multiField: the per-body node fields, sized once; the contact correction of the velocity
+    // (and acceleration, with the pair forces recorded, after the grid solve).
+    void allocateBodyFields();
+    void correctContact(double dt, bool afterForce, double t);
+    // The node velocity array particle p reads: its body's under multiField, else the shared one.
+    const Vector<Dim>* velocityOf(std::size_t p) const {
+        return multi_ ? bodyVelocity_[std::size_t((*region_)[p])].data() : nodeVelocity_->data();
+    }
     std::string bodyName(std::size_t i) const;
     const ConstitutiveLaw& law(std::size_t i) const {
         return *(*materials_)[(*material_)[i]].constitutiveLaw;
@@ -115,6 +134,7 @@ private:
     std::unique_ptr<VelocityUpdate> velocityUpdate_;
     std::unique_ptr<GridDamping> damping_;
     std::unique_ptr<PressureSmoothing<Dim>> smoothing_;
+    std::unique_ptr<Contact<Dim>> contact_;
     std::unique_ptr<BodyForce> bodyForce_;
     std::unique_ptr<MaterialSet<Dim>> materials_;
     std::unique_ptr<UpdatedLagrangianStress<Dim>> ul_;  // equation of state + strength materials
@@ -157,6 +177,18 @@ private:
     std::vector<Vector<Dim>> nodeX_;     // the node positions (APIC's x_I - x_p), made once
     std::vector<std::size_t> pieceParent_, pieceSize_, pieceRoot_;  // checkTorn: union-find, sizes, roots
     std::int64_t particleSteps_ = 0;
+
+    // multiField (empty under singleField): per body b the node arrays, b = the region id.
+    bool multi_ = false;
+    const std::vector<std::int64_t>* region_ = nullptr;
+    std::vector<std::string> bodyNames_;
+    std::vector<std::vector<double>> bodyMass_;
+    std::vector<std::vector<Vector<Dim>>> bodyMomentum_, bodyGradient_, bodyPosition_, bodyNodeForce_,
+        bodyVelocity_, bodyAcceleration_;
+    std::unique_ptr<CsvFile> contactCsv_;
+    std::vector<double> contactRow_;
+    double peakContactForce_ = 0, peakContactTime_ = 0;
+    std::string peakContactPair_;
 };
 
 extern template class MpmSolver<1>;

@@ -1,0 +1,234 @@
+// contact `multiField` (Contact.hpp): a node field per body and a contact law between them.
+// Bardenhagen, Guilkey, Roessig, Brackbill, Witzel & Foster 2001, "An improved contact algorithm
+// for the material point method and application to stress propagation in granular material",
+// CMES 2(4) 509-522 (eqs. 19-27); Nairn 2013, "Modeling imperfect interfaces in the material
+// point method using multimaterial methods", CMES 92(3) 271-299 (the position check).
+//
+// At a node I where bodies a, b, ... have mass m_aI >= massCutoff (the solver has solved each
+// body's momentum on its own field, v_aI the velocity after the force):
+//
+//   centre of mass     v_cm = sum_b m_bI v_bI / sum_b m_bI
+//   normals            n_a = g_a / |g_a|, g_a = sum_p m_p grad N_I(x_p) over a's particles: each
+//                      term points from the particle towards the node (N_I grows towards x_I),
+//                      so at a's boundary g_a points out of a, and n_a is a's OUTWARD normal (the
+//                      sign convention of this file); the pair normal of a against b is
+//                      n_ab = (n_a - n_b) / |n_a - n_b|, and n_ba = -n_ab exactly (floating-point
+//                      subtraction is antisymmetric), so the corrections of a and b are equal and
+//                      opposite momenta: m_a dv_a = -m_b dv_b to round-off.
+//   approaching        w_a = v_aI - v_cm, d_a = w_a . n_ab > 0 (a moves towards b relative to the
+//                      centre of mass); a separating pair is left alone (no sticking, no tension)
+//   position check     optional (`separation s`, Nairn 2013): contact only where the bodies'
+//                      nodal centres of mass x_a = sum N m x / m_aI are closer than s cells along
+//                      the normal, (x_b - x_a) . n_ab < s dx; without it (Bardenhagen 2001) any
+//                      shared node of approaching bodies is in contact, one to two cells early
+//                      as the single field is (note 6.3)
+//   normal             dv_a = -d_a n_ab                 (the normal relative velocity removed)
+//   Coulomb friction   t_a = w_a - d_a n_ab;  dv_a -= min(mu d_a, |t_a|) t_a / |t_a|
+//                      (stick when |t_a| <= mu d_a; mu = 0 frictionless)
+//   update             v_aI += dv_a, a_aI += dv_a / dt (so FLIP, which takes the acceleration,
+//                      sees the same correction as the positions and PIC)
+//   contact force      F_ab = sum_I m_aI dv_a / dt, the force on a from b (reported per pair)
+//
+// More than two bodies at a node: each body is paired with the heaviest other body there (its
+// normal and friction), against the common v_cm; momentum is then exact only for two.
+// Limits: the normals are the grid's (smeared over a cell), so a corner sees an averaged normal;
+// the contact force has no adhesion (no tension across the interface), and no interface
+// stiffness (the imperfect interfaces of Nairn 2013).
+#include "mpm/contact/Contact.hpp"
+
+#include "core/Parallel.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+
+namespace mfdyn {
+
+namespace {
+
+KeywordSchema pairKeywords() {
+    return KeywordSchema("contact", "multiFieldCoeffs/pairs")
+        .words("bodies", "the two bodies (particleGen regions) of the pair")
+        .scalar("friction", "-", "the pair's Coulomb coefficient mu (0: frictionless)")
+        .atLeast(0);
+}
+
+KeywordSchema coeffKeywords() {
+    return KeywordSchema("contact", "multiFieldCoeffs")
+        .scalar("friction", "-", "Coulomb coefficient mu of every pair not in `pairs` (0: frictionless)")
+        .atLeast(0)
+        .orDefault(0.0)
+        .scalar("separation", "cells",
+                "position check (Nairn 2013): contact only where the bodies' nodal centres of mass are "
+                "closer than this along the normal; none: every shared node of approaching bodies")
+        .greaterThan(0)
+        .optional()
+        .dictionary("pairs", "per-pair laws: name { bodies (a b); friction mu; }")
+        .optional();
+}
+
+template <int Dim>
+class MultiFieldContact final : public Contact<Dim> {
+public:
+    static KeywordSchema keywords() {
+        return KeywordSchema(Contact<Dim>::familyName, "multiField")
+            .dictionary("multiFieldCoeffs", "the contact law (friction, separation, pairs)")
+            .optional()
+            .nested(&coeffKeywords);
+    }
+
+    explicit MultiFieldContact(const Dictionary& dict) {
+        const KeywordValues values = keywords().read(dict);
+        if (!values.given("multiFieldCoeffs")) return;
+        const KeywordValues& c = values.nested("multiFieldCoeffs");
+        friction_ = c.scalar("friction");
+        if (auto s = c.optionalScalar("separation")) separation_ = *s;
+        if (!c.given("pairs")) return;
+        const Dictionary& pairs = c.dictionary("pairs");
+        for (const auto& e : pairs.entries()) {
+            if (!e->isDict())
+                throw pairs.error(e->key, "a pair is a sub-dictionary: " + e->key +
+                                              " { bodies (lower upper); friction 0.1; }");
+            Pair p;
+            p.dict = e->dict.get();
+            const KeywordValues pv = pairKeywords().read(*p.dict);
+            p.bodies = pv.words("bodies");
+            if (p.bodies.size() != 2)
+                throw pv.error("bodies", "a pair names two bodies, found " + std::to_string(p.bodies.size()));
+            p.friction = pv.scalar("friction");
+            pairs_.push_back(std::move(p));
+        }
+    }
+
+    bool multiField() const override { return true; }
+
+    void bind(const std::vector<std::string>& bodies) override {
+        bodies_ = bodies.size();
+        mu_.assign(bodies_ * bodies_, friction_);
+        std::string valid;
+        for (const auto& b : bodies) valid += (valid.empty() ? "" : " ") + b;
+        std::vector<bool> set(bodies_ * bodies_, false);
+        for (const auto& p : pairs_) {
+            std::size_t id[2];
+            for (int k = 0; k < 2; ++k) {
+                const auto it = std::find(bodies.begin(), bodies.end(), p.bodies[k]);
+                if (it == bodies.end())
+                    throw p.dict->error("bodies", "unknown body '" + p.bodies[k] +
+                                                      "'; the bodies (particleGen "
+                                                      "regions) of this run are: " +
+                                                      valid);
+                id[k] = std::size_t(it - bodies.begin());
+            }
+            if (id[0] == id[1])
+                throw p.dict->error("bodies",
+                                    "a contact law between body '" + p.bodies[0] +
+                                        "' and itself: a pair names two different bodies of: " + valid);
+            if (set[id[0] * bodies_ + id[1]])
+                throw p.dict->error("bodies", "a second law for the pair (" + p.bodies[0] + " " +
+                                                  p.bodies[1] + "): each pair is given once");
+            set[id[0] * bodies_ + id[1]] = set[id[1] * bodies_ + id[0]] = true;
+            mu_[id[0] * bodies_ + id[1]] = mu_[id[1] * bodies_ + id[0]] = p.friction;
+        }
+    }
+
+    std::size_t pairs() const override { return bodies_ < 2 ? 0 : bodies_ * (bodies_ - 1) / 2; }
+
+    std::vector<Vector<Dim>> correct(ContactNodes<Dim>& s, double dt) const override {
+        std::vector<Vector<Dim>> force(pairs(), Vector<Dim>::Zero());
+        const std::size_t B = s.mass->size();
+        if (B != bodies_)
+            throw std::logic_error("contact multiField: correct() on " + std::to_string(B) +
+                                   " bodies, bound to " + std::to_string(bodies_));
+        if (B < 2) return force;
+        const std::size_t n = (*s.mass)[0].size();
+        const auto& m = *s.mass;
+        // The nodes where two or more bodies have mass: a parallel flag pass, then the few of them
+        // (the interfaces) in node order, serially, so the pair sums are deterministic.
+        shared_.resize(n);
+        parallelFor(n, [&](std::size_t I) {
+            int count = 0;
+            for (std::size_t b = 0; b < B; ++b) count += m[b][I] >= s.massCutoff;
+            shared_[I] = count >= 2;
+        });
+        auto& v = *s.velocity;
+        const bool forces = s.acceleration != nullptr && dt > 0;
+        const double reach = separation_ * s.cellSize;
+        for (std::size_t I = 0; I < n; ++I) {
+            if (!shared_[I]) continue;
+            double M = 0;
+            Vector<Dim> P = Vector<Dim>::Zero();
+            for (std::size_t b = 0; b < B; ++b)
+                if (m[b][I] >= s.massCutoff) M += m[b][I], P += m[b][I] * v[b][I];
+            const Vector<Dim> vcm = P / M;
+            for (std::size_t a = 0; a < B; ++a) {
+                if (!(m[a][I] >= s.massCutoff)) continue;
+                std::size_t o = B;
+                for (std::size_t b = 0; b < B; ++b)
+                    if (b != a && m[b][I] >= s.massCutoff && (o == B || m[b][I] > m[o][I])) o = b;
+                const Vector<Dim>& ga = (*s.massGradient)[a][I];
+                const Vector<Dim>& go = (*s.massGradient)[o][I];
+                const double la = ga.norm(), lo = go.norm();
+                if (!(la > 0) || !(lo > 0)) continue;
+                const Vector<Dim> d = ga / la - go / lo;  // n_a - n_o with n = g / |g|
+                const double ld = d.norm();
+                if (!(ld > 1e-12)) continue;  // parallel normals: no interface direction
+                const Vector<Dim> nrm = d / ld;
+                if (s.massPosition && std::isfinite(reach)) {
+                    const Vector<Dim> xa = (*s.massPosition)[a][I] / m[a][I];
+                    const Vector<Dim> xo = (*s.massPosition)[o][I] / m[o][I];
+                    if ((xo - xa).dot(nrm) >= reach) continue;
+                }
+                const Vector<Dim> w = v[a][I] - vcm;
+                const double dn = w.dot(nrm);
+                if (!(dn > 0)) continue;
+                Vector<Dim> dv = -dn * nrm;
+                const double mu = mu_[a * bodies_ + o];
+                if (mu > 0) {
+                    const Vector<Dim> wt = w - dn * nrm;
+                    const double lt = wt.norm();
+                    if (lt > 0) dv -= (std::min(mu * dn, lt) / lt) * wt;
+                }
+                v[a][I] += dv;
+                if (forces) {
+                    (*s.acceleration)[a][I] += dv / dt;
+                    // Counted once, on the pair's first body: its partner's correction is the reaction.
+                    if (a < o) force[Contact<Dim>::pairIndex(a, o, B)] += (m[a][I] / dt) * dv;
+                }
+            }
+        }
+        return force;
+    }
+
+    std::string describe() const override {
+        std::ostringstream t;
+        t << "multiField (friction " << friction_;
+        if (std::isfinite(separation_)) t << ", separation " << separation_ << " cells";
+        for (const auto& p : pairs_)
+            t << ", " << p.bodies[0] << "-" << p.bodies[1] << " friction " << p.friction;
+        t << ")";
+        return t.str();
+    }
+
+private:
+    struct Pair {
+        std::vector<std::string> bodies;
+        double friction = 0;
+        const Dictionary* dict = nullptr;  // the case's mpmProperties, alive for the run
+    };
+    double friction_ = 0;
+    double separation_ = std::numeric_limits<double>::infinity();
+    std::vector<Pair> pairs_;
+    std::size_t bodies_ = 0;
+    std::vector<double> mu_;                    // bodies x bodies
+    mutable std::vector<std::uint8_t> shared_;  // scratch of correct(): kept, so a run allocates once
+};
+
+}  // namespace
+
+MFDYN_REGISTER_DIM(Contact, MultiFieldContact, "multiField",
+                   "a node field per body, non-penetration and Coulomb friction (Bardenhagen et al. 2001)");
+
+}  // namespace mfdyn
