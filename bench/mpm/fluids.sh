@@ -7,7 +7,10 @@
 #               a cell (dx = 2/353.5 m: 1061 x 1414 cells), the usual MPM density;
 #   disks-singleField / disks-multiField: tutorials/mpmFsi/twoDisks scaled to 2 x 49 900 points
 #               (as run.sh), with `contact singleField` and `contact multiField` (a velocity field a
-#               body, Bardenhagen et al. 2001): the cost of the multi-field contact.
+#               body, Bardenhagen et al. 2001): the cost of the multi-field contact;
+#   collapse3D: tutorials/mpmFsi/columnCollapse3D (issue 18's 3D case: the Martin & Moyce column as a
+#               slab, 25 600 points, 120 x 48 x 4 cells, 27-node quadratic B-splines), at the fixed
+#               step 5e-5 s (its CFL step at maxCo 0.3 is 5.7e-5 s).
 # Each for a fixed number of steps at the fixed step 1e-5 s (dam) / 1e-4 s (disks), USL, FLIP 0.99,
 # quadratic B-splines, no function objects, no writes. Prints particle-steps/s per core (wall and
 # per CPU-second), the peak RSS per particle and the solver's phase shares. Usage:
@@ -66,6 +69,16 @@ setupDisks() {  # contact
     (cd "$dir" && "$MFDYN_BIN/particleGen" >log.particleGen 2>&1)
 }
 
+setupCollapse3D() {
+    dir=$WORK/collapse3D
+    rm -rf "$dir"; mkdir -p "$dir"
+    cp -r "$root/tutorials/mpmFsi/columnCollapse3D/system" "$root/tutorials/mpmFsi/columnCollapse3D/constant" "$dir/"
+    awk '/^functions/ { skip = 1 } !skip { print }' "$dir/system/controlDict" >"$dir/c" && mv "$dir/c" "$dir/system/controlDict"
+    endTime=$(awk -v s="$steps" 'BEGIN { printf "%.6g", s * 5e-5 }')
+    sed -i "s/^endTime .*/endTime         $endTime;/; s/^deltaT .*/deltaT          5e-5;/; s/^adjustTimeStep .*/adjustTimeStep  no;/; s/^writeControl .*/writeControl    timeStep;/; s/^writeInterval .*/writeInterval   1000000000;/" "$dir/system/controlDict"
+    (cd "$dir" && "$MFDYN_BIN/particleGen" >log.particleGen 2>&1)
+}
+
 val() { awk -v L="$2" 'index($0, "    " L " ") == 1 { s = substr($0, length(L) + 5); split(s, a, " "); print a[1]; exit }' "$1"; }
 phaseShare() { grep -m1 "^    phase $2 " "$1" | sed 's/.*(\([0-9.]*\)%).*/\1/'; }
 raw=$WORK/raw.tsv
@@ -99,6 +112,8 @@ for c in $contacts; do
     setupDisks "$c"
     runMpm "disks-$c"
 done
+setupCollapse3D
+runMpm collapse3D
 
 echo
 echo "case                  particles steps particle-steps/s/core (wall) per CPU-s  RSS/particle peak MiB  shapeFn p2g  grid g2p stress [% of loop]"
