@@ -626,6 +626,7 @@ void MpmSolver<Dim>::smoothPressure() {
     if (sigmaZZ_) f.cauchyStressZZ = *sigmaZZ_;
     f.smoothed = [this](std::int64_t k) { return ul_->isFluid(k); };
     f.pressureAt = [this](std::size_t p, double J) { return ul_->pressureAt(p, J, rho0_[p]); };
+    if (auto* pressure = ul_->pressureField()) f.pressure = *pressure;
     smoothing_->apply(grid_, f);
 }
 

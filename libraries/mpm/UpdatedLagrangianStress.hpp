@@ -91,6 +91,10 @@ public:
     // The equation of state's pressure of particle p at jacobian J (density rho0 / J), with the
     // particle's present specific internal energy; no state is changed.
     double pressureAt(std::size_t p, double J, double rho0) const;
+    // The particles' stored pressure p^n (the next energy update's), null before bind: pressure
+    // smoothing writes the pressure it gives a particle here, so the field written and the next
+    // step's pressure work agree with the stress.
+    std::vector<double>* pressureField() const { return p_; }
     // The viscous time-step limit of particle p, rho dx^2 / (4 mu) (doc/methods/mpm.md 2.7), with
     // rho = rho0 / J; infinity for a material without viscosity.
     double viscousTimeStep(std::size_t p, double rho0, double dx) const;
