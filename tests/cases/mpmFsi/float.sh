@@ -17,7 +17,7 @@
 #               cell, 0.0267, above the floor), and the draft's half range over t = 5..10 below
 #               0.01 (0.4 cells);
 #   both        mass exact: no particle removed, each body's mass equal to its first write's.
-# Measured at the tutorial's settings (working tree at f6310a2 with the uncommitted contact code):
+# Measured at the tutorial's settings (the contact code of b0dd44d):
 # singleField 0.07289, half range 0.00038, afloat throughout: its checks pass; multiField
 # 0.18405 (+48%: the water passes into the block, which sinks under the surface to a cell above
 # the floor) and a contact force of -144.9 (-7%): THIS TEST FAILS until multiField holds the block
