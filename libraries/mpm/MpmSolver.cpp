@@ -365,6 +365,7 @@ void MpmSolver<Dim>::mapMassAndMomentum() {
             std::fill(bodyMomentum_[b].begin(), bodyMomentum_[b].end(), Vector<Dim>::Zero());
             std::fill(bodyGradient_[b].begin(), bodyGradient_[b].end(), Vector<Dim>::Zero());
             std::fill(bodyPosition_[b].begin(), bodyPosition_[b].end(), Vector<Dim>::Zero());
+            std::fill(bodyVolume_[b].begin(), bodyVolume_[b].end(), 0.0);
         }
         // One colour's particles touch disjoint nodes, hence disjoint (body, node) entries too.
         colouring_.forEachParticle([&](std::size_t p) {
@@ -373,6 +374,8 @@ void MpmSolver<Dim>::mapMassAndMomentum() {
             auto& bp = bodyMomentum_[b];
             auto& bg = bodyGradient_[b];
             auto& bx = bodyPosition_[b];
+            auto& bV = bodyVolume_[b];
+            const double Vp = (*J_)[p] * m_[p] / rho0_[p];  // V = J V0
             const std::size_t base = p * stride;
             for (std::size_t k = 0; k < list_.count[p]; ++k) {
                 const auto node = list_.node[base + k];
@@ -384,6 +387,7 @@ void MpmSolver<Dim>::mapMassAndMomentum() {
                 bp[node] += Nm * vp;
                 bg[node] += m_[p] * list_.gradient[base + k];
                 bx[node] += Nm * x_[p];
+                bV[node] += list_.weight[base + k] * Vp;
             }
         });
         return;
@@ -755,6 +759,7 @@ template <int Dim>
 void MpmSolver<Dim>::allocateBodyFields() {
     const std::size_t bodies = bodyNames_.size(), nodes = grid_.nodeCount();
     bodyMass_.assign(bodies, std::vector<double>(nodes, 0.0));
+    bodyVolume_.assign(bodies, std::vector<double>(nodes, 0.0));
     for (auto* f : {&bodyMomentum_, &bodyGradient_, &bodyPosition_, &bodyNodeForce_, &bodyVelocity_,
                     &bodyAcceleration_})
         f->assign(bodies, std::vector<Vector<Dim>>(nodes, Vector<Dim>::Zero()));
@@ -766,10 +771,12 @@ void MpmSolver<Dim>::correctContact(double dt, bool afterForce, double t) {
     nodes.mass = &bodyMass_;
     nodes.massGradient = &bodyGradient_;
     nodes.massPosition = &bodyPosition_;
+    nodes.volume = &bodyVolume_;
     nodes.velocity = &bodyVelocity_;
     nodes.acceleration = afterForce ? &bodyAcceleration_ : nullptr;
     nodes.massCutoff = massCutoff_;
     nodes.cellSize = grid_.smallestCellSize();
+    nodes.cellVolume = grid_.cellSize().prod();
     const std::vector<Vector<Dim>> force = contact_->correct(nodes, dt);
     if (!afterForce || force.empty()) return;
     // One row a step: time, then per pair (a, b) the force on a from b and its magnitude.

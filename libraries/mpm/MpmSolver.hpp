@@ -182,7 +182,7 @@ private:
     bool multi_ = false;
     const std::vector<std::int64_t>* region_ = nullptr;
     std::vector<std::string> bodyNames_;
-    std::vector<std::vector<double>> bodyMass_;
+    std::vector<std::vector<double>> bodyMass_, bodyVolume_;  // sum N m_p, sum N V_p per body
     std::vector<std::vector<Vector<Dim>>> bodyMomentum_, bodyGradient_, bodyPosition_, bodyNodeForce_,
         bodyVelocity_, bodyAcceleration_;
     std::unique_ptr<CsvFile> contactCsv_;

@@ -7,6 +7,7 @@
 //     {
 //         friction     0;             // Coulomb mu of every pair (0: frictionless)
 //         separation   0.8;           // optional: the position check, in cells
+//         volumeFraction 1;           // optional: the volume check (bodies fill the node's support)
 //         pairs { gate { bodies (water gate); friction 0.1; } }   // optional, per pair
 //     }
 //
@@ -36,10 +37,13 @@ struct ContactNodes {
     const std::vector<std::vector<Vector<Dim>>>* massGradient = nullptr;  // sum_p m_p grad N_Ip
     // sum_p N_Ip m_p x_p (the nodal centre of mass times m_bI), for the position check; may be null.
     const std::vector<std::vector<Vector<Dim>>>* massPosition = nullptr;
+    // sum_p N_Ip V_p (the body's volume at the node, V_p = J_p V0_p), for the volume check; may be null.
+    const std::vector<std::vector<double>>* volume = nullptr;
     std::vector<std::vector<Vector<Dim>>>* velocity = nullptr;      // v_bI, corrected in place
     std::vector<std::vector<Vector<Dim>>>* acceleration = nullptr;  // a_bI += dv / dt; may be null
     double massCutoff = 1e-10;  // a body takes part at a node where its mass is at least this
     double cellSize = 1.0;      // the grid's smallest spacing (the position check's unit)
+    double cellVolume = 1.0;    // the product of the spacings: int N_I dV at a node off the edges
 };
 
 template <int Dim>

@@ -22,6 +22,14 @@
 //                      the normal, (x_b - x_a) . n_ab < s dx; without it (Bardenhagen 2001) any
 //                      shared node of approaching bodies is in contact, one to two cells early
 //                      as the single field is (note 6.3)
+//   volume check       optional (`volumeFraction f`): contact only where the bodies' nodal volumes
+//                      fill the node's support, (V_aI + V_bI) >= f dx^d with V_bI = sum_p N_Ip V_p:
+//                      as sum_I N_I = 1 and int N_I dV = dx^d, two bodies that touch (no gap) fill
+//                      it exactly, V_aI + V_bI = dx^d, whatever the shape function and wherever the
+//                      node lies; a gap leaves it short, an overlap over. f = 1 is contact at
+//                      touching. Short of 1 also where the support reaches past a free surface (a
+//                      waterline) or past the grid's edges (the folded edge functions), so there
+//                      the check waits for overlap.
 //   normal             dv_a = -d_a n_ab                 (the normal relative velocity removed)
 //   Coulomb friction   t_a = w_a - d_a n_ab;  dv_a -= min(mu d_a, |t_a|) t_a / |t_a|
 //                      (stick when |t_a| <= mu d_a; mu = 0 frictionless)
@@ -66,6 +74,18 @@ KeywordSchema coeffKeywords() {
                 "closer than this along the normal; none: every shared node of approaching bodies")
         .greaterThan(0)
         .optional()
+        .scalar(
+            "volumeFraction", "-",
+            "volume check: contact only where the bodies' nodal volumes sum_p N_Ip V_p fill at least this "
+            "fraction of the node's dx^d (1: touching, for any shape function)")
+        .greaterThan(0)
+        .optional()
+        .word("normal", {"averaged", "largerGradient"},
+              "the pair normal: averaged, (n_a - n_b) / |n_a - n_b| (Bardenhagen et al. 2001), or "
+              "largerGradient, "
+              "the normal of the body whose mass gradient at the node is the larger (Nairn's maximum volume "
+              "gradient)")
+        .orDefault("averaged")
         .dictionary("pairs", "per-pair laws: name { bodies (a b); friction mu; }")
         .optional();
 }
@@ -86,6 +106,8 @@ public:
         const KeywordValues& c = values.nested("multiFieldCoeffs");
         friction_ = c.scalar("friction");
         if (auto s = c.optionalScalar("separation")) separation_ = *s;
+        largerGradient_ = c.word("normal") == "largerGradient";
+        if (auto f = c.optionalScalar("volumeFraction")) volumeFraction_ = *f;
         if (!c.given("pairs")) return;
         const Dictionary& pairs = c.dictionary("pairs");
         for (const auto& e : pairs.entries()) {
@@ -172,10 +194,21 @@ public:
                 const Vector<Dim>& go = (*s.massGradient)[o][I];
                 const double la = ga.norm(), lo = go.norm();
                 if (!(la > 0) || !(lo > 0)) continue;
-                const Vector<Dim> d = ga / la - go / lo;  // n_a - n_o with n = g / |g|
-                const double ld = d.norm();
-                if (!(ld > 1e-12)) continue;  // parallel normals: no interface direction
-                const Vector<Dim> nrm = d / ld;
+                Vector<Dim> nrm;
+                if (largerGradient_) {
+                    // The same body's normal for a and o (the larger |g|, ties to the lower index),
+                    // so n_oa = -n_ao and the pair's corrections stay equal and opposite.
+                    const bool own = la > lo || (la == lo && a < o);
+                    nrm = own ? Vector<Dim>(ga / la) : Vector<Dim>(-go / lo);
+                } else {
+                    const Vector<Dim> d = ga / la - go / lo;  // n_a - n_o with n = g / |g|
+                    const double ld = d.norm();
+                    if (!(ld > 1e-12)) continue;  // parallel normals: no interface direction
+                    nrm = d / ld;
+                }
+                if (volumeFraction_ > 0 && s.volume &&
+                    (*s.volume)[a][I] + (*s.volume)[o][I] < volumeFraction_ * s.cellVolume)
+                    continue;
                 if (s.massPosition && std::isfinite(reach)) {
                     const Vector<Dim> xa = (*s.massPosition)[a][I] / m[a][I];
                     const Vector<Dim> xo = (*s.massPosition)[o][I] / m[o][I];
@@ -206,6 +239,8 @@ public:
         std::ostringstream t;
         t << "multiField (friction " << friction_;
         if (std::isfinite(separation_)) t << ", separation " << separation_ << " cells";
+        if (largerGradient_) t << ", normal largerGradient";
+        if (volumeFraction_ > 0) t << ", volumeFraction " << volumeFraction_;
         for (const auto& p : pairs_)
             t << ", " << p.bodies[0] << "-" << p.bodies[1] << " friction " << p.friction;
         t << ")";
@@ -220,6 +255,8 @@ private:
     };
     double friction_ = 0;
     double separation_ = std::numeric_limits<double>::infinity();
+    double volumeFraction_ = 0;    // the volume check's f; 0: off
+    bool largerGradient_ = false;  // `normal largerGradient`: one body's normal, not the average
     std::vector<Pair> pairs_;
     std::size_t bodies_ = 0;
     std::vector<double> mu_;                    // bodies x bodies

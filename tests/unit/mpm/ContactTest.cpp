@@ -143,6 +143,32 @@ TEST(MpmContact, PositionCheckWaitsUntilTheBodiesAreClose) {
     }
 }
 
+TEST(MpmContact, VolumeCheckWaitsUntilTheBodiesFillTheNode) {
+    // volumeFraction 1 on a 0.1 m cell (dx^2 = 0.01): nodal volumes summing to 0.009 leave a gap
+    // (no contact), to 0.01 the bodies touch (contact), to 0.011 they overlap (contact).
+    const Dictionary dict =
+        Dictionary::parse("contact multiField;\nmultiFieldCoeffs { volumeFraction 1; }\n", "mpmProperties");
+    auto c = contactOf(dict);
+    EXPECT_NE(c->describe().find("volumeFraction 1"), std::string::npos) << c->describe();
+    for (const double filled : {0.009, 0.01, 0.011}) {
+        Node s(1.0, 0.0, -1.0, 0.0);
+        s.nodes.cellVolume = 0.01;
+        const Vector<2> before = s.velocity[0][0];
+        const std::vector<std::vector<double>> volume{{0.6 * filled}, {0.4 * filled}};
+        s.nodes.volume = &volume;
+        const Vector<2> p0 = s.momentum();
+        c->correct(s.nodes, 1e-3);
+        if (filled < 0.01) {
+            EXPECT_EQ(s.velocity[0][0], before) << "filled " << filled;
+        } else {
+            // Both normal velocities become the centre of mass's, (2 - 1) / 3, momentum exact.
+            EXPECT_NEAR(s.velocity[0][0].dot(s.n), 1.0 / 3.0, 1e-15) << "filled " << filled;
+            EXPECT_NEAR(s.velocity[1][0].dot(s.n), 1.0 / 3.0, 1e-15) << "filled " << filled;
+            EXPECT_LT((s.momentum() - p0).norm(), 1e-15);
+        }
+    }
+}
+
 std::string bindError(const std::string& pairs) {
     const Dictionary dict = Dictionary::parse(
         "contact multiField;\nmultiFieldCoeffs\n{\n    pairs\n    {\n" + pairs + "\n    }\n}\n",
