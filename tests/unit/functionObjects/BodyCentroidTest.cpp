@@ -4,6 +4,7 @@
 // the largest of them over writes, the summary's mass to 17 digits, and the refused input.
 // Every value is a short hand sum of a few binary-exact numbers: equality to a few ulps (the
 // CSV's 10 significant digits where they are not short).
+#include "FunctionObjectTestCase.hpp"
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "functionObjects/FunctionObject.hpp"
@@ -22,35 +23,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* controlDictText = "endTime 1; deltaT 1e-3; writeControl timeStep; writeInterval 1;\n";
-
 template <int Dim>
-class Context final : public RunContext {
-public:
-    explicit Context(const fs::path& root)
-        : case_(root),
-          time_(root / "system" / "controlDict", Dictionary::parse(controlDictText, "controlDict")) {
-        time_.start(0, "0");
-    }
-    const Case& runCase() const override { return case_; }
-    const Time& time() const override { return time_; }
-    const FieldStore& fields() const override { return particles; }
-    const std::string& startTimeName() const override { return start_; }
-    void at(double t) { time_.start(t, "0"); }
-    ParticleSet<Dim> particles;
-
-private:
-    Case case_;
-    Time time_;
-    std::string start_ = "0";
-};
-
+using Context = functionObjectTest::TestContext<Dim>;
 fs::path freshCase(const std::string& tag) {
-    const fs::path root = fs::temp_directory_path() / ("mfdynBodyCentroid-" + tag + "-" + std::to_string(::getpid()));
-    fs::remove_all(root);
-    fs::create_directories(root / "system");
-    std::ofstream(root / "system" / "controlDict") << controlDictText;
-    return root;
+    return functionObjectTest::freshCase("BodyCentroid", tag);
 }
 
 std::vector<std::string> lines(const fs::path& file) {
@@ -127,17 +103,18 @@ TEST(BodyCentroid, CentroidExtremesAndDepths) {
     }
     const auto csv = lines(root / "postProcessing" / "bodies" / "0" / "bodyCentroid.csv");
     ASSERT_EQ(csv.size(), 4u);
-    EXPECT_EQ(csv[0],
-              "time,drop_mass,drop_centroid_x,drop_centroid_y,drop_height,drop_lowest,drop_highest,drop_depth,"
-              "drop_centroidDepth,pool_mass,pool_centroid_x,pool_centroid_y,pool_height,pool_lowest,"
-              "pool_highest,pool_depth,pool_centroidDepth");
+    EXPECT_EQ(
+        csv[0],
+        "time,drop_mass,drop_centroid_x,drop_centroid_y,drop_height,drop_lowest,drop_highest,drop_depth,"
+        "drop_centroidDepth,pool_mass,pool_centroid_x,pool_centroid_y,pool_height,pool_lowest,"
+        "pool_highest,pool_depth,pool_centroidDepth");
     const auto first = numbers(csv[1]);
     const double expected[] = {0, 4, 2, 4.5, 4.5, 3, 5, 1, -0.5, 8, 1.5, 0.5, 0.5, 0, 1, 4, 3.5};
     ASSERT_EQ(first.size(), 17u);
     for (std::size_t k = 0; k < 17; ++k) EXPECT_DOUBLE_EQ(first[k], expected[k]) << csv[0] << " column " << k;
     const auto second = numbers(csv[2]);
-    EXPECT_DOUBLE_EQ(second[3], 2.5);  // the drop's centroid y
-    EXPECT_DOUBLE_EQ(second[7], 3.0);  // its depth 4 - 1
+    EXPECT_DOUBLE_EQ(second[3], 2.5);   // the drop's centroid y
+    EXPECT_DOUBLE_EQ(second[7], 3.0);   // its depth 4 - 1
     EXPECT_DOUBLE_EQ(second[15], 4.0);  // the pool's unchanged
     fs::remove_all(root);
 }
@@ -160,11 +137,11 @@ TEST(BodyCentroid, TiltedUpAndDefaultRegions) {
     ASSERT_EQ(row.size(), 13u);  // no level: 6 columns a body
     // The CSV holds 10 significant digits: a relative 1e-9.
     const double r2 = std::sqrt(2.0), digits = 1e-9;
-    EXPECT_NEAR(row[4], r2, digits * r2);                // pool height
-    EXPECT_EQ(row[5], 0.0);                              // pool lowest
-    EXPECT_NEAR(row[6], 2 * r2, digits * 2 * r2);        // pool highest
-    EXPECT_NEAR(row[10], 6.5 / r2, digits * 6.5 / r2);   // drop height (2 + 4.5)/sqrt 2
-    EXPECT_NEAR(row[11], 5 / r2, digits * 5 / r2);       // drop lowest (2 + 3)/sqrt 2
+    EXPECT_NEAR(row[4], r2, digits * r2);               // pool height
+    EXPECT_EQ(row[5], 0.0);                             // pool lowest
+    EXPECT_NEAR(row[6], 2 * r2, digits * 2 * r2);       // pool highest
+    EXPECT_NEAR(row[10], 6.5 / r2, digits * 6.5 / r2);  // drop height (2 + 4.5)/sqrt 2
+    EXPECT_NEAR(row[11], 5 / r2, digits * 5 / r2);      // drop lowest (2 + 3)/sqrt 2
     fs::remove_all(root);
 }
 

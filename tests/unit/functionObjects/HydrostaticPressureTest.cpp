@@ -7,6 +7,7 @@
 // over [0.05, 0.8] (width 0.25) the bins hold h = {0.05, 0.15, 0.25}, {0.35, 0.45}, {0.55, 0.65,
 // 0.75}: mean heights 0.15, 0.4, 0.65, exact 8500, 6000, 3500 Pa. A linear p has its bin mean at the
 // bin's mean height, so the exact column's errors are round-off (1e-9 relative is ample).
+#include "FunctionObjectTestCase.hpp"
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "functionObjects/FunctionObject.hpp"
@@ -25,50 +26,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* controlDictText = "endTime 1; deltaT 1e-3; writeControl timeStep; writeInterval 1;\n";
-
-class Context final : public RunContext {
-public:
-    explicit Context(const fs::path& root)
-        : case_(root),
-          time_(root / "system" / "controlDict", Dictionary::parse(controlDictText, "controlDict")) {
-        time_.start(0, "0");
-    }
-    const Case& runCase() const override { return case_; }
-    const Time& time() const override { return time_; }
-    const FieldStore& fields() const override { return particles; }
-    const std::string& startTimeName() const override { return start_; }
-    ParticleSet<2> particles;
-
-private:
-    Case case_;
-    Time time_;
-    std::string start_ = "0";
-};
-
+using Context = functionObjectTest::TestContext<2>;
 fs::path freshCase(const std::string& tag) {
-    const fs::path root =
-        fs::temp_directory_path() / ("mfdynHydrostatic-" + tag + "-" + std::to_string(::getpid()));
-    fs::remove_all(root);
-    fs::create_directories(root / "system");
-    std::ofstream(root / "system" / "controlDict") << controlDictText;
-    return root;
+    return functionObjectTest::freshCase("Hydrostatic", tag);
 }
-
-std::vector<std::vector<double>> rows(const fs::path& file) {
-    std::ifstream in(file);
-    std::vector<std::vector<double>> out;
-    std::string line;
-    std::getline(in, line);  // header
-    while (std::getline(in, line)) {
-        std::vector<double> row;
-        std::istringstream cells(line);
-        for (std::string cell; std::getline(cells, cell, ',');)
-            row.push_back(std::stod(cell));
-        out.push_back(row);
-    }
-    return out;
-}
+const auto& rows = functionObjectTest::csvRows;
 
 std::unique_ptr<FunctionObject> make(const std::string& text, const RunContext& c) {
     return FunctionObject::New(Dictionary::parse(text, "controlDict"), "p", c);
@@ -147,8 +109,9 @@ TEST(HydrostaticPressure, WorstBinAndNorms) {
     column(c.particles);
     c.particles.scalarField("pressure")[4] += 120;
     for (const std::string& text :
-         {std::string(columnDict), std::string("type hydrostaticPressure; rho 1000; g 10; bins 3; surfaceBand 0.2; "
-                                               "region water; freeSurface 1;")}) {
+         {std::string(columnDict),
+          std::string("type hydrostaticPressure; rho 1000; g 10; bins 3; surfaceBand 0.2; "
+                      "region water; freeSurface 1;")}) {
         auto p = make(text, c);
         p->write();
         const auto norms = p->errorNorms();
@@ -165,7 +128,8 @@ TEST(HydrostaticPressure, WorstBinAndNorms) {
         EXPECT_NE(s.find("the largest relative error 1% at h = 0.4 "), std::string::npos) << s;
     }
     // Without the line or the region, the tank's particles count: H is 1.5 + 0.05 and the errors huge.
-    auto all = make("type hydrostaticPressure; rho 1000; g 10; bins 3; surfaceBand 0.2; surfaceOffset 0.05;", c);
+    auto all =
+        make("type hydrostaticPressure; rho 1000; g 10; bins 3; surfaceBand 0.2; surfaceOffset 0.05;", c);
     all->write();
     EXPECT_NE(all->summary()[0].find("H = 1.55,"), std::string::npos) << all->summary()[0];
     EXPECT_GT(all->errorNorms()[0].Linf, 1e5);
@@ -177,7 +141,8 @@ TEST(HydrostaticPressure, RefusedInput) {
     const fs::path root = freshCase("errors");
     Context c(root);
     column(c.particles);
-    const std::string alone = errorOf("type hydrostaticPressure; rho 1000; g 10; bins 3; surfaceBand 0.2; point (0.5 0);", c);
+    const std::string alone =
+        errorOf("type hydrostaticPressure; rho 1000; g 10; bins 3; surfaceBand 0.2; point (0.5 0);", c);
     EXPECT_NE(alone.find("point and halfWidth go together"), std::string::npos) << alone;
     EXPECT_NE(alone.find("controlDict"), std::string::npos) << alone;
     const std::string region =
@@ -191,7 +156,8 @@ TEST(HydrostaticPressure, RefusedInput) {
     // A run without a pressure field (a solid with a constitutive law): the fields there are.
     Context solid(root);
     column(solid.particles, false);
-    const std::string field = errorOf("type hydrostaticPressure; rho 1000; g 10; bins 3; surfaceBand 0;", solid);
+    const std::string field =
+        errorOf("type hydrostaticPressure; rho 1000; g 10; bins 3; surfaceBand 0;", solid);
     EXPECT_NE(field.find("no field 'pressure'"), std::string::npos) << field;
     fs::remove_all(root);
 }

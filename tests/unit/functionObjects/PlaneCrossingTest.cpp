@@ -5,6 +5,7 @@
 // and the refused input (zero normal, unknown region, wrong component count). The positions are
 // binary-exact (halves and quarters), so distances are exact; the normal (0 2) normalises to (0 1)
 // exactly.
+#include "FunctionObjectTestCase.hpp"
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "functionObjects/FunctionObject.hpp"
@@ -23,50 +24,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* controlDictText = "endTime 1; deltaT 1e-3; writeControl timeStep; writeInterval 1;\n";
-
-class Context final : public RunContext {
-public:
-    explicit Context(const fs::path& root)
-        : case_(root),
-          time_(root / "system" / "controlDict", Dictionary::parse(controlDictText, "controlDict")) {
-        time_.start(0, "0");
-    }
-    const Case& runCase() const override { return case_; }
-    const Time& time() const override { return time_; }
-    const FieldStore& fields() const override { return particles; }
-    const std::string& startTimeName() const override { return start_; }
-    void at(double t) { time_.start(t, "0"); }
-    ParticleSet<2> particles;
-
-private:
-    Case case_;
-    Time time_;
-    std::string start_ = "0";
-};
-
+using Context = functionObjectTest::TestContext<2>;
 fs::path freshCase(const std::string& tag) {
-    const fs::path root =
-        fs::temp_directory_path() / ("mfdynPlaneCrossing-" + tag + "-" + std::to_string(::getpid()));
-    fs::remove_all(root);
-    fs::create_directories(root / "system");
-    std::ofstream(root / "system" / "controlDict") << controlDictText;
-    return root;
+    return functionObjectTest::freshCase("PlaneCrossing", tag);
 }
-
-std::vector<std::vector<double>> rows(const fs::path& file) {
-    std::ifstream in(file);
-    std::vector<std::vector<double>> out;
-    std::string line;
-    std::getline(in, line);  // header
-    while (std::getline(in, line)) {
-        std::vector<double> row;
-        std::istringstream cells(line);
-        for (std::string cell; std::getline(cells, cell, ',');) row.push_back(std::stod(cell));
-        out.push_back(row);
-    }
-    return out;
-}
+const auto& rows = functionObjectTest::csvRows;
 
 std::unique_ptr<FunctionObject> make(const std::string& text, const std::string& name, const RunContext& c) {
     return FunctionObject::New(Dictionary::parse(text, "controlDict"), name, c);
@@ -111,7 +73,8 @@ TEST(PlaneCrossing, FirstCrossingAndLeader) {
         EXPECT_FALSE(exit->stopRequested());  // no stopAtCrossing, and nothing crossed
         EXPECT_TRUE(exit->referenceValues().empty());
         ASSERT_EQ(exit->summary().size(), 1u);
-        EXPECT_NE(exit->summary()[0].find("no particle crossed by t = 0"), std::string::npos) << exit->summary()[0];
+        EXPECT_NE(exit->summary()[0].find("no particle crossed by t = 0"), std::string::npos)
+            << exit->summary()[0];
         c.at(0.5);
         c.particles.position()[1] = Vector<2>(0.25, 2.5);
         exit->write();
@@ -125,13 +88,16 @@ TEST(PlaneCrossing, FirstCrossingAndLeader) {
         EXPECT_EQ(refs[0].value, 0.5);
         EXPECT_EQ(refs[0].exact, 0.4);
         const std::string s = exit->summary()[0];
-        EXPECT_NE(s.find("first crossing at t = 0.5 (after t = 0; linear estimate 0.25) by particle 1 at (0.25 2.5)"),
-                  std::string::npos)
+        EXPECT_NE(
+            s.find(
+                "first crossing at t = 0.5 (after t = 0; linear estimate 0.25) by particle 1 at (0.25 2.5)"),
+            std::string::npos)
             << s;
     }
     const auto leading = rows(root / "postProcessing" / "exit" / "0" / "leading.csv");
     ASSERT_EQ(leading.size(), 3u);
-    const std::vector<std::vector<double>> expected{{0, -0.5, 2, 0.5, 1.5}, {0.5, 0.5, 1, 0.25, 2.5}, {0.75, 1, 0, 0, 3}};
+    const std::vector<std::vector<double>> expected{
+        {0, -0.5, 2, 0.5, 1.5}, {0.5, 0.5, 1, 0.25, 2.5}, {0.75, 1, 0, 0, 3}};
     for (std::size_t k = 0; k < 3; ++k) EXPECT_EQ(leading[k], expected[k]) << "row " << k;
     const auto crossing = rows(root / "postProcessing" / "exit" / "0" / "crossing.csv");
     ASSERT_EQ(crossing.size(), 1u);
@@ -145,7 +111,8 @@ TEST(PlaneCrossing, RegionAndStopRequest) {
     const fs::path root = freshCase("region");
     Context c(root);
     threeParticles(c.particles);
-    auto exit = make("type planeCrossing; region water; point (0 1.25); normal (0 1); stopAtCrossing yes;", "exit", c);
+    auto exit = make("type planeCrossing; region water; point (0 1.25); normal (0 1); stopAtCrossing yes;",
+                     "exit", c);
     exit->write();  // the wall's particle is beyond already: not water
     EXPECT_FALSE(exit->stopRequested());
     c.at(0.25);
