@@ -42,7 +42,7 @@
 // Limits: the normals are the grid's (smeared over a cell), so a corner sees an averaged normal;
 // the contact force has no adhesion (no tension across the interface), and no interface
 // stiffness (the imperfect interfaces of Nairn 2013).
-#include "mpm/contact/Contact.hpp"
+#include "mpm/contact/MultiFieldContact.hpp"
 
 #include "core/Parallel.hpp"
 
@@ -82,188 +82,168 @@ KeywordSchema coeffKeywords() {
         .optional()
         .word("normal", {"averaged", "largerGradient"},
               "the pair normal: averaged, (n_a - n_b) / |n_a - n_b| (Bardenhagen et al. 2001), or "
-              "largerGradient, "
-              "the normal of the body whose mass gradient at the node is the larger (Nairn's maximum volume "
+              "largerGradient, the normal of the body whose mass gradient at the node is the larger (Nairn's "
+              "maximum volume "
               "gradient)")
         .orDefault("averaged")
         .dictionary("pairs", "per-pair laws: name { bodies (a b); friction mu; }")
         .optional();
 }
 
-template <int Dim>
-class MultiFieldContact final : public Contact<Dim> {
-public:
-    static KeywordSchema keywords() {
-        return KeywordSchema(Contact<Dim>::familyName, "multiField")
-            .dictionary("multiFieldCoeffs", "the contact law (friction, separation, pairs)")
-            .optional()
-            .nested(&coeffKeywords);
-    }
-
-    explicit MultiFieldContact(const Dictionary& dict) {
-        const KeywordValues values = keywords().read(dict);
-        if (!values.given("multiFieldCoeffs")) return;
-        const KeywordValues& c = values.nested("multiFieldCoeffs");
-        friction_ = c.scalar("friction");
-        if (auto s = c.optionalScalar("separation")) separation_ = *s;
-        largerGradient_ = c.word("normal") == "largerGradient";
-        if (auto f = c.optionalScalar("volumeFraction")) volumeFraction_ = *f;
-        if (!c.given("pairs")) return;
-        const Dictionary& pairs = c.dictionary("pairs");
-        for (const auto& e : pairs.entries()) {
-            if (!e->isDict())
-                throw pairs.error(e->key, "a pair is a sub-dictionary: " + e->key +
-                                              " { bodies (lower upper); friction 0.1; }");
-            Pair p;
-            p.dict = e->dict.get();
-            const KeywordValues pv = pairKeywords().read(*p.dict);
-            p.bodies = pv.words("bodies");
-            if (p.bodies.size() != 2)
-                throw pv.error("bodies", "a pair names two bodies, found " + std::to_string(p.bodies.size()));
-            p.friction = pv.scalar("friction");
-            pairs_.push_back(std::move(p));
-        }
-    }
-
-    bool multiField() const override { return true; }
-
-    void bind(const std::vector<std::string>& bodies) override {
-        bodies_ = bodies.size();
-        mu_.assign(bodies_ * bodies_, friction_);
-        std::string valid;
-        for (const auto& b : bodies) valid += (valid.empty() ? "" : " ") + b;
-        std::vector<bool> set(bodies_ * bodies_, false);
-        for (const auto& p : pairs_) {
-            std::size_t id[2];
-            for (int k = 0; k < 2; ++k) {
-                const auto it = std::find(bodies.begin(), bodies.end(), p.bodies[k]);
-                if (it == bodies.end())
-                    throw p.dict->error("bodies", "unknown body '" + p.bodies[k] +
-                                                      "'; the bodies (particleGen "
-                                                      "regions) of this run are: " +
-                                                      valid);
-                id[k] = std::size_t(it - bodies.begin());
-            }
-            if (id[0] == id[1])
-                throw p.dict->error("bodies",
-                                    "a contact law between body '" + p.bodies[0] +
-                                        "' and itself: a pair names two different bodies of: " + valid);
-            if (set[id[0] * bodies_ + id[1]])
-                throw p.dict->error("bodies", "a second law for the pair (" + p.bodies[0] + " " +
-                                                  p.bodies[1] + "): each pair is given once");
-            set[id[0] * bodies_ + id[1]] = set[id[1] * bodies_ + id[0]] = true;
-            mu_[id[0] * bodies_ + id[1]] = mu_[id[1] * bodies_ + id[0]] = p.friction;
-        }
-    }
-
-    std::size_t pairs() const override { return bodies_ < 2 ? 0 : bodies_ * (bodies_ - 1) / 2; }
-
-    std::vector<Vector<Dim>> correct(ContactNodes<Dim>& s, double dt) const override {
-        std::vector<Vector<Dim>> force(pairs(), Vector<Dim>::Zero());
-        const std::size_t B = s.mass->size();
-        if (B != bodies_)
-            throw std::logic_error("contact multiField: correct() on " + std::to_string(B) +
-                                   " bodies, bound to " + std::to_string(bodies_));
-        if (B < 2) return force;
-        const std::size_t n = (*s.mass)[0].size();
-        const auto& m = *s.mass;
-        // The nodes where two or more bodies have mass: a parallel flag pass, then the few of them
-        // (the interfaces) in node order, serially, so the pair sums are deterministic.
-        shared_.resize(n);
-        parallelFor(n, [&](std::size_t I) {
-            int count = 0;
-            for (std::size_t b = 0; b < B; ++b) count += m[b][I] >= s.massCutoff;
-            shared_[I] = count >= 2;
-        });
-        auto& v = *s.velocity;
-        const bool forces = s.acceleration != nullptr && dt > 0;
-        const double reach = separation_ * s.cellSize;
-        for (std::size_t I = 0; I < n; ++I) {
-            if (!shared_[I]) continue;
-            double M = 0;
-            Vector<Dim> P = Vector<Dim>::Zero();
-            for (std::size_t b = 0; b < B; ++b)
-                if (m[b][I] >= s.massCutoff) M += m[b][I], P += m[b][I] * v[b][I];
-            const Vector<Dim> vcm = P / M;
-            for (std::size_t a = 0; a < B; ++a) {
-                if (!(m[a][I] >= s.massCutoff)) continue;
-                std::size_t o = B;
-                for (std::size_t b = 0; b < B; ++b)
-                    if (b != a && m[b][I] >= s.massCutoff && (o == B || m[b][I] > m[o][I])) o = b;
-                const Vector<Dim>& ga = (*s.massGradient)[a][I];
-                const Vector<Dim>& go = (*s.massGradient)[o][I];
-                const double la = ga.norm(), lo = go.norm();
-                if (!(la > 0) || !(lo > 0)) continue;
-                Vector<Dim> nrm;
-                if (largerGradient_) {
-                    // The same body's normal for a and o (the larger |g|, ties to the lower index),
-                    // so n_oa = -n_ao and the pair's corrections stay equal and opposite.
-                    const bool own = la > lo || (la == lo && a < o);
-                    nrm = own ? Vector<Dim>(ga / la) : Vector<Dim>(-go / lo);
-                } else {
-                    const Vector<Dim> d = ga / la - go / lo;  // n_a - n_o with n = g / |g|
-                    const double ld = d.norm();
-                    if (!(ld > 1e-12)) continue;  // parallel normals: no interface direction
-                    nrm = d / ld;
-                }
-                if (volumeFraction_ > 0 && s.volume &&
-                    (*s.volume)[a][I] + (*s.volume)[o][I] < volumeFraction_ * s.cellVolume)
-                    continue;
-                if (s.massPosition && std::isfinite(reach)) {
-                    const Vector<Dim> xa = (*s.massPosition)[a][I] / m[a][I];
-                    const Vector<Dim> xo = (*s.massPosition)[o][I] / m[o][I];
-                    if ((xo - xa).dot(nrm) >= reach) continue;
-                }
-                const Vector<Dim> w = v[a][I] - vcm;
-                const double dn = w.dot(nrm);
-                if (!(dn > 0)) continue;
-                Vector<Dim> dv = -dn * nrm;
-                const double mu = mu_[a * bodies_ + o];
-                if (mu > 0) {
-                    const Vector<Dim> wt = w - dn * nrm;
-                    const double lt = wt.norm();
-                    if (lt > 0) dv -= (std::min(mu * dn, lt) / lt) * wt;
-                }
-                v[a][I] += dv;
-                if (forces) {
-                    (*s.acceleration)[a][I] += dv / dt;
-                    // Counted once, on the pair's first body: its partner's correction is the reaction.
-                    if (a < o) force[Contact<Dim>::pairIndex(a, o, B)] += (m[a][I] / dt) * dv;
-                }
-            }
-        }
-        return force;
-    }
-
-    std::string describe() const override {
-        std::ostringstream t;
-        t << "multiField (friction " << friction_;
-        if (std::isfinite(separation_)) t << ", separation " << separation_ << " cells";
-        if (largerGradient_) t << ", normal largerGradient";
-        if (volumeFraction_ > 0) t << ", volumeFraction " << volumeFraction_;
-        for (const auto& p : pairs_)
-            t << ", " << p.bodies[0] << "-" << p.bodies[1] << " friction " << p.friction;
-        t << ")";
-        return t.str();
-    }
-
-private:
-    struct Pair {
-        std::vector<std::string> bodies;
-        double friction = 0;
-        const Dictionary* dict = nullptr;  // the case's mpmProperties, alive for the run
-    };
-    double friction_ = 0;
-    double separation_ = std::numeric_limits<double>::infinity();
-    double volumeFraction_ = 0;    // the volume check's f; 0: off
-    bool largerGradient_ = false;  // `normal largerGradient`: one body's normal, not the average
-    std::vector<Pair> pairs_;
-    std::size_t bodies_ = 0;
-    std::vector<double> mu_;                    // bodies x bodies
-    mutable std::vector<std::uint8_t> shared_;  // scratch of correct(): kept, so a run allocates once
-};
-
 }  // namespace
+
+template <int Dim>
+KeywordSchema MultiFieldContact<Dim>::keywords() {
+    return KeywordSchema(Contact<Dim>::familyName, "multiField")
+        .dictionary("multiFieldCoeffs", "the contact law (friction, separation, pairs)")
+        .optional()
+        .nested(&coeffKeywords);
+}
+
+template <int Dim>
+MultiFieldContact<Dim>::MultiFieldContact(const Dictionary& dict) {
+    const KeywordValues values = keywords().read(dict);
+    if (!values.given("multiFieldCoeffs")) return;
+    const KeywordValues& c = values.nested("multiFieldCoeffs");
+    friction_ = c.scalar("friction");
+    if (auto s = c.optionalScalar("separation")) separation_ = *s;
+    largerGradient_ = c.word("normal") == "largerGradient";
+    if (auto f = c.optionalScalar("volumeFraction")) volumeFraction_ = *f;
+    if (!c.given("pairs")) return;
+    const Dictionary& pairs = c.dictionary("pairs");
+    for (const auto& e : pairs.entries()) {
+        if (!e->isDict())
+            throw pairs.error(
+                e->key, "a pair is a sub-dictionary: " + e->key + " { bodies (lower upper); friction 0.1; }");
+        Pair p;
+        p.dict = e->dict.get();
+        const KeywordValues pv = pairKeywords().read(*p.dict);
+        p.bodies = pv.words("bodies");
+        if (p.bodies.size() != 2)
+            throw pv.error("bodies", "a pair names two bodies, found " + std::to_string(p.bodies.size()));
+        p.friction = pv.scalar("friction");
+        pairs_.push_back(std::move(p));
+    }
+}
+
+template <int Dim>
+void MultiFieldContact<Dim>::bind(const std::vector<std::string>& bodies) {
+    bodies_ = bodies.size();
+    mu_.assign(bodies_ * bodies_, friction_);
+    std::string valid;
+    for (const auto& b : bodies) valid += (valid.empty() ? "" : " ") + b;
+    std::vector<bool> set(bodies_ * bodies_, false);
+    for (const auto& p : pairs_) {
+        std::size_t id[2];
+        for (int k = 0; k < 2; ++k) {
+            const auto it = std::find(bodies.begin(), bodies.end(), p.bodies[k]);
+            if (it == bodies.end())
+                throw p.dict->error("bodies", "unknown body '" + p.bodies[k] +
+                                                  "'; the bodies (particleGen "
+                                                  "regions) of this run are: " +
+                                                  valid);
+            id[k] = std::size_t(it - bodies.begin());
+        }
+        if (id[0] == id[1])
+            throw p.dict->error("bodies", "a contact law between body '" + p.bodies[0] +
+                                              "' and itself: a pair names two different bodies of: " + valid);
+        if (set[id[0] * bodies_ + id[1]])
+            throw p.dict->error("bodies", "a second law for the pair (" + p.bodies[0] + " " + p.bodies[1] +
+                                              "): each pair is given once");
+        set[id[0] * bodies_ + id[1]] = set[id[1] * bodies_ + id[0]] = true;
+        mu_[id[0] * bodies_ + id[1]] = mu_[id[1] * bodies_ + id[0]] = p.friction;
+    }
+}
+
+template <int Dim>
+std::vector<Vector<Dim>> MultiFieldContact<Dim>::correct(ContactNodes<Dim>& s, double dt) const {
+    std::vector<Vector<Dim>> force(pairs(), Vector<Dim>::Zero());
+    const std::size_t B = s.mass->size();
+    if (B != bodies_)
+        throw std::logic_error("contact multiField: correct() on " + std::to_string(B) +
+                               " bodies, bound to " + std::to_string(bodies_));
+    if (B < 2) return force;
+    const std::size_t n = (*s.mass)[0].size();
+    const auto& m = *s.mass;
+    // The nodes where two or more bodies have mass: a parallel flag pass, then the few of them
+    // (the interfaces) in node order, serially, so the pair sums are deterministic.
+    shared_.resize(n);
+    parallelFor(n, [&](std::size_t I) {
+        int count = 0;
+        for (std::size_t b = 0; b < B; ++b) count += m[b][I] >= s.massCutoff;
+        shared_[I] = count >= 2;
+    });
+    auto& v = *s.velocity;
+    const bool forces = s.acceleration != nullptr && dt > 0;
+    const double reach = separation_ * s.cellSize;
+    for (std::size_t I = 0; I < n; ++I) {
+        if (!shared_[I]) continue;
+        double M = 0;
+        Vector<Dim> P = Vector<Dim>::Zero();
+        for (std::size_t b = 0; b < B; ++b)
+            if (m[b][I] >= s.massCutoff) M += m[b][I], P += m[b][I] * v[b][I];
+        const Vector<Dim> vcm = P / M;
+        for (std::size_t a = 0; a < B; ++a) {
+            if (!(m[a][I] >= s.massCutoff)) continue;
+            std::size_t o = B;
+            for (std::size_t b = 0; b < B; ++b)
+                if (b != a && m[b][I] >= s.massCutoff && (o == B || m[b][I] > m[o][I])) o = b;
+            const Vector<Dim>& ga = (*s.massGradient)[a][I];
+            const Vector<Dim>& go = (*s.massGradient)[o][I];
+            const double la = ga.norm(), lo = go.norm();
+            if (!(la > 0) || !(lo > 0)) continue;
+            Vector<Dim> nrm;
+            if (largerGradient_) {
+                // The same body's normal for a and o (the larger |g|, ties to the lower index),
+                // so n_oa = -n_ao and the pair's corrections stay equal and opposite.
+                const bool own = la > lo || (la == lo && a < o);
+                nrm = own ? Vector<Dim>(ga / la) : Vector<Dim>(-go / lo);
+            } else {
+                const Vector<Dim> d = ga / la - go / lo;  // n_a - n_o with n = g / |g|
+                const double ld = d.norm();
+                if (!(ld > 1e-12)) continue;  // parallel normals: no interface direction
+                nrm = d / ld;
+            }
+            if (volumeFraction_ > 0 && s.volume &&
+                (*s.volume)[a][I] + (*s.volume)[o][I] < volumeFraction_ * s.cellVolume)
+                continue;
+            if (s.massPosition && std::isfinite(reach)) {
+                const Vector<Dim> xa = (*s.massPosition)[a][I] / m[a][I];
+                const Vector<Dim> xo = (*s.massPosition)[o][I] / m[o][I];
+                if ((xo - xa).dot(nrm) >= reach) continue;
+            }
+            const Vector<Dim> w = v[a][I] - vcm;
+            const double dn = w.dot(nrm);
+            if (!(dn > 0)) continue;
+            Vector<Dim> dv = -dn * nrm;
+            const double mu = mu_[a * bodies_ + o];
+            if (mu > 0) {
+                const Vector<Dim> wt = w - dn * nrm;
+                const double lt = wt.norm();
+                if (lt > 0) dv -= (std::min(mu * dn, lt) / lt) * wt;
+            }
+            v[a][I] += dv;
+            if (forces) {
+                (*s.acceleration)[a][I] += dv / dt;
+                // Counted once, on the pair's first body: its partner's correction is the reaction.
+                if (a < o) force[Contact<Dim>::pairIndex(a, o, B)] += (m[a][I] / dt) * dv;
+            }
+        }
+    }
+    return force;
+}
+
+template <int Dim>
+std::string MultiFieldContact<Dim>::describe() const {
+    std::ostringstream t;
+    t << "multiField (friction " << friction_;
+    if (std::isfinite(separation_)) t << ", separation " << separation_ << " cells";
+    if (largerGradient_) t << ", normal largerGradient";
+    if (volumeFraction_ > 0) t << ", volumeFraction " << volumeFraction_;
+    for (const auto& p : pairs_) t << ", " << p.bodies[0] << "-" << p.bodies[1] << " friction " << p.friction;
+    t << ")";
+    return t.str();
+}
 
 MFDYN_REGISTER_DIM(Contact, MultiFieldContact, "multiField",
                    "a node field per body, non-penetration and Coulomb friction (Bardenhagen et al. 2001)");
