@@ -22,6 +22,7 @@
 //     mirrorGhosts yes;                          // mirror the body across symmetry/skew planes
 //     essentialBoundaryConditions direct;        // or lagrangeMultiplier (App. B; mirrorGhosts no)
 //     initialState { type swingingCube; amplitude 5e-4; }   // optional, applied at a fresh start
+//     energyGrowthLimit 1.5;                     // stop when the energy exceeds 1.5 x the energy put in
 //
 // system/controlDict: maxCo 0.3;                 // dt = maxCo h_min / c_p,max (default 0.3 here)
 //
@@ -104,6 +105,9 @@ private:
     void computeDisplacementGradient();
     void computeRates(const std::vector<Vector<Dim>>& xTilde, double t);
     void checkState(const char* phase) const;
+    // Kinetic + internal energy of the whole body, and the energy-growth check (TlSphSolver.cpp).
+    double totalEnergy() const;
+    void checkEnergyGrowth() const;
     Tensor<3> cofactor3(std::size_t i) const;
     const ConstitutiveLaw& law(std::size_t material) const {
         return *(*materials_)[material].constitutiveLaw;
@@ -144,6 +148,13 @@ private:
     bool projectMomentum_ = true, projectDissipation_ = true, projectJacobian_ = true;
     bool currentWaveSpeed_ = true;
     std::optional<double> deformedCourant_;  // tlSphProperties' deformedCourant, when given
+    // The energy-growth check: tlSphProperties' energyGrowthLimit, the energy at this run's first
+    // step, the work put in since, the largest energy put in so far (initial + work), the power
+    // of the last stage's external forces, the fastest particle's speed at the start.
+    double energyGrowthLimit_ = 1.5;
+    std::optional<double> energyStart_;
+    double externalWork_ = 0, energyInput_ = 0, stagePower_ = 0, startSpeed_ = 0;
+    int stepsSinceEnergyCheck_ = 0;
     double spacing_ = 0, h_ = 0, cpMax_ = 0;
     double csMax_ = 0;  // the largest shear-wave speed sqrt(mu/rho0), for the JST momentumSpeed shear
     std::unique_ptr<BodyForce> bodyForce_;  // null without a bodyForce sub-dictionary
