@@ -251,7 +251,21 @@ std::string RegistryIndex::describe(std::string_view what) const {
 
 std::string sourceFileRelative(const char* file) {
     if (!file || !*file) return {};
-    const std::filesystem::path path = std::filesystem::path(file).lexically_normal();
+    std::filesystem::path path = std::filesystem::path(file).lexically_normal();
+    if (path.is_relative()) {
+        // A relative __FILE__ is relative to the compiler's directory, somewhere in the build
+        // tree (ccache's base_dir rewrites the paths so, for one): what follows its leading ".."
+        // is the path in the source tree ("../libraries/core/Registry.cpp" from build/ under
+        // Ninja, "../../../libraries/..." from a Makefile build's subdirectory).
+        std::filesystem::path rest;
+        bool leading = true;
+        for (const auto& part : path) {
+            if (leading && (part == ".." || part == ".")) continue;
+            leading = false;
+            rest /= part;
+        }
+        return rest.generic_string();
+    }
 #ifdef MFDYN_SOURCE_DIR
     const std::filesystem::path root = std::filesystem::path(MFDYN_SOURCE_DIR).lexically_normal();
     const std::filesystem::path relative = path.lexically_relative(root);

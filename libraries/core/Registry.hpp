@@ -112,7 +112,8 @@ private:
     std::vector<std::unique_ptr<RegistryFamily>> families_;
 };
 
-// `file` (a __FILE__) relative to the source tree libmfdyn_core was built from, when inside it.
+// `file` (a __FILE__) relative to the source tree libmfdyn_core was built from, when inside it; a
+// relative __FILE__ (as ccache's base_dir makes it) without its leading "..".
 std::string sourceFileRelative(const char* file);
 
 // The shared object holding `address` ("libmfdyn_core.so", "libmyModels.so", or the program).

@@ -249,3 +249,16 @@ TEST(Registry, DuplicateInAScopedFamilyNamesTheScopedFamily) {
             << e.what();
     }
 }
+
+// A registration's source file is the path in the source tree whatever form __FILE__ takes: the
+// absolute path a plain build gives, or one relative to the compiler's directory in the build
+// tree (ccache with base_dir rewrites them so; Ninja compiles in build/, Makefiles in each
+// target's subdirectory). mfDoc's pages and tests name the sources by it.
+TEST(Registry, SourceFileIsRelativeToTheSourceTreeForAnyFormOfFile) {
+    EXPECT_EQ(sourceFileRelative("../libraries/core/Registry.cpp"), "libraries/core/Registry.cpp");
+    EXPECT_EQ(sourceFileRelative("../../../tests/unit/core/RegistryTest.cpp"),
+              "tests/unit/core/RegistryTest.cpp");
+    EXPECT_EQ(sourceFileRelative("./libraries/core/Registry.cpp"), "libraries/core/Registry.cpp");
+    EXPECT_EQ(sourceFileRelative(__FILE__), "tests/unit/core/RegistryTest.cpp");
+    EXPECT_EQ(sourceFileRelative(""), "");
+}
