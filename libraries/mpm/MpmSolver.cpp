@@ -774,6 +774,8 @@ void MpmSolver<Dim>::correctContact(double dt, bool afterForce, double t) {
     nodes.volume = &bodyVolume_;
     nodes.velocity = &bodyVelocity_;
     nodes.acceleration = afterForce ? &bodyAcceleration_ : nullptr;
+    nodes.grid = &grid_;
+    nodes.shape = shape_.get();
     nodes.massCutoff = massCutoff_;
     nodes.cellSize = grid_.smallestCellSize();
     nodes.cellVolume = grid_.cellSize().prod();

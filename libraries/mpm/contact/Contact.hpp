@@ -8,6 +8,7 @@
 //         friction     0;             // Coulomb mu of every pair (0: frictionless)
 //         separation   0.8;           // optional: the position check, in cells
 //         volumeFraction 1;           // optional: the volume check (bodies fill the node's support)
+//         surfaceGap   yes;           // optional: the surface-gap check (surfaces from the centres)
 //         pairs { gate { bodies (water gate); friction 0.1; } }   // optional, per pair
 //     }
 //
@@ -23,6 +24,8 @@
 #include "core/KeywordSchema.hpp"
 #include "core/Registry.hpp"
 #include "core/Tensor.hpp"
+#include "grid/CartesianGrid.hpp"
+#include "grid/shapeFunctions/ShapeFunction.hpp"
 
 #include <memory>
 #include <string>
@@ -41,6 +44,9 @@ struct ContactNodes {
     const std::vector<std::vector<double>>* volume = nullptr;
     std::vector<std::vector<Vector<Dim>>>* velocity = nullptr;      // v_bI, corrected in place
     std::vector<std::vector<Vector<Dim>>>* acceleration = nullptr;  // a_bI += dv / dt; may be null
+    // The grid (node positions) and the shape function, for the surface-gap check; may be null.
+    const CartesianGrid<Dim>* grid = nullptr;
+    const ShapeFunction<Dim>* shape = nullptr;
     double massCutoff = 1e-10;  // a body takes part at a node where its mass is at least this
     double cellSize = 1.0;      // the grid's smallest spacing (the position check's unit)
     double cellVolume = 1.0;    // the product of the spacings: int N_I dV at a node off the edges

@@ -30,6 +30,17 @@
 //                      touching. Short of 1 also where the support reaches past a free surface (a
 //                      waterline) or past the grid's edges (the folded edge functions), so there
 //                      the check waits for overlap.
+//   surface-gap check  optional (`surfaceGap yes`, issue 18's float): contact only where the two
+//                      bodies' surfaces touch or overlap, each surface located along n_ab from the
+//                      body's nodal centre of mass through the shape function's half-space profile
+//                      (HalfSpaceProfile.cpp): c_a = (x_a - x_I) . n_ab / h_n, s_a = c^-1(c_a),
+//                      s_b = -c^-1(-c_b), contact where s_b - s_a <= 0, with h_n = |diag(h) n_ab|
+//                      the cell's width along the normal. No parameter: touching half-spaces give
+//                      s_b = s_a for any shape function, and unlike the volume check a free
+//                      surface cutting the support across the normal (a waterline) leaves the
+//                      centres, and so the gap, unchanged; unlike the position check's fixed
+//                      distance, the touching distance c_b - c_a follows the node's place (0.81
+//                      cells with quadratic B-splines at a node on the interface, up to 1.5 off it)
 //   normal             dv_a = -d_a n_ab                 (the normal relative velocity removed)
 //   Coulomb friction   t_a = w_a - d_a n_ab;  dv_a -= min(mu d_a, |t_a|) t_a / |t_a|
 //                      (stick when |t_a| <= mu d_a; mu = 0 frictionless)
@@ -80,6 +91,10 @@ KeywordSchema coeffKeywords() {
             "fraction of the node's dx^d (1: touching, for any shape function)")
         .greaterThan(0)
         .optional()
+        .flag("surfaceGap",
+              "surface-gap check: contact only where the bodies' surfaces, located from their nodal centres "
+              "of mass through the shape function's half-space profile, touch or overlap")
+        .orDefault(false)
         .word("normal", {"averaged", "largerGradient"},
               "the pair normal: averaged, (n_a - n_b) / |n_a - n_b| (Bardenhagen et al. 2001), or "
               "largerGradient, the normal of the body whose mass gradient at the node is the larger (Nairn's "
@@ -109,6 +124,7 @@ MultiFieldContact<Dim>::MultiFieldContact(const Dictionary& dict) {
     if (auto s = c.optionalScalar("separation")) separation_ = *s;
     largerGradient_ = c.word("normal") == "largerGradient";
     if (auto f = c.optionalScalar("volumeFraction")) volumeFraction_ = *f;
+    surfaceGap_ = c.flag("surfaceGap");
     if (!c.given("pairs")) return;
     const Dictionary& pairs = c.dictionary("pairs");
     for (const auto& e : pairs.entries()) {
@@ -176,6 +192,12 @@ std::vector<Vector<Dim>> MultiFieldContact<Dim>::correct(ContactNodes<Dim>& s, d
     auto& v = *s.velocity;
     const bool forces = s.acceleration != nullptr && dt > 0;
     const double reach = separation_ * s.cellSize;
+    if (surfaceGap_) {
+        if (!s.grid || !s.shape || !s.massPosition)
+            throw std::logic_error(
+                "contact multiField: surfaceGap needs the grid, shape function and centres");
+        if (!profile_) profile_.emplace(*s.shape);
+    }
     for (std::size_t I = 0; I < n; ++I) {
         if (!shared_[I]) continue;
         double M = 0;
@@ -212,6 +234,13 @@ std::vector<Vector<Dim>> MultiFieldContact<Dim>::correct(ContactNodes<Dim>& s, d
                 const Vector<Dim> xo = (*s.massPosition)[o][I] / m[o][I];
                 if ((xo - xa).dot(nrm) >= reach) continue;
             }
+            if (surfaceGap_) {
+                const Vector<Dim> xI = s.grid->nodePosition(typename CartesianGrid<Dim>::Index(I));
+                const double hn = nrm.cwiseProduct(s.grid->cellSize()).norm();
+                const double ca = ((*s.massPosition)[a][I] / m[a][I] - xI).dot(nrm) / hn;
+                const double co = ((*s.massPosition)[o][I] / m[o][I] - xI).dot(nrm) / hn;
+                if (-profile_->surface(-co) - profile_->surface(ca) > 0) continue;  // a gap between them
+            }
             const Vector<Dim> w = v[a][I] - vcm;
             const double dn = w.dot(nrm);
             if (!(dn > 0)) continue;
@@ -240,6 +269,7 @@ std::string MultiFieldContact<Dim>::describe() const {
     if (std::isfinite(separation_)) t << ", separation " << separation_ << " cells";
     if (largerGradient_) t << ", normal largerGradient";
     if (volumeFraction_ > 0) t << ", volumeFraction " << volumeFraction_;
+    if (surfaceGap_) t << ", surfaceGap";
     for (const auto& p : pairs_) t << ", " << p.bodies[0] << "-" << p.bodies[1] << " friction " << p.friction;
     t << ")";
     return t.str();

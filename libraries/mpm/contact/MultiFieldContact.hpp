@@ -3,11 +3,14 @@
 // two bodies have mass at a node (MultiFieldContact.cpp for the equations and their sources).
 //
 //     contact          multiField;
-//     multiFieldCoeffs { friction 0; separation 0.667; volumeFraction 1; normal averaged; pairs { ... } }
+//     multiFieldCoeffs { friction 0; separation 0.667; volumeFraction 1; surfaceGap no;
+//                        normal averaged; pairs { ... } }
 #include "mpm/contact/Contact.hpp"
+#include "mpm/contact/HalfSpaceProfile.hpp"
 
 #include <cstdint>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,10 +37,12 @@ private:
     double separation_ = std::numeric_limits<double>::infinity();
     double volumeFraction_ = 0;    // the volume check's f; 0: off
     bool largerGradient_ = false;  // `normal largerGradient`: one body's normal, not the average
+    bool surfaceGap_ = false;      // the surface-gap check
     std::vector<Pair> pairs_;
     std::size_t bodies_ = 0;
-    std::vector<double> mu_;                    // bodies x bodies
-    mutable std::vector<std::uint8_t> shared_;  // scratch of correct(): kept, so a run allocates once
+    std::vector<double> mu_;                           // bodies x bodies
+    mutable std::vector<std::uint8_t> shared_;         // scratch of correct(): kept, so a run allocates once
+    mutable std::optional<HalfSpaceProfile> profile_;  // the surface-gap check's, on the first call
 };
 
 }  // namespace mfdyn

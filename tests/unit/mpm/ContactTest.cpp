@@ -3,10 +3,13 @@
 // selection as the solver does. Two bodies at one node: approaching, the normal velocities become
 // equal (the centre-of-mass velocity's normal component) with momentum exact to round-off;
 // separating, nothing changes; Coulomb friction moves the tangential velocity by mu times the
-// normal change, or sticks; the position check; the pair errors (a body with itself, an unknown
+// normal change, or sticks; the position check; the volume check; the surface-gap check on
+// particle clouds (touching, apart, at a waterline); the pair errors (a body with itself, an unknown
 // body) naming the file, the line and the valid bodies.
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
+#include "grid/CartesianGrid.hpp"
+#include "grid/shapeFunctions/ShapeFunction.hpp"
 #include "mpm/MpmModels.hpp"
 #include "mpm/contact/Contact.hpp"
 
@@ -179,6 +182,74 @@ std::string bindError(const std::string& pairs) {
         return e.what();
     }
     return "";
+}
+
+// Two bodies of particles (10 x 10 a cell) side by side, body 0 in x < xa and body 1 in
+// x > xb, both below y = top, mapped with the quadratic B-spline as the solver maps them; the
+// node (3, 3) at (0.3, 0.3) of a 6 x 6 grid of 0.1 cells is the probe. Body 0 moves at +1 in x,
+// body 1 at -1 (approaching). Returns whether the probe's velocity of body 0 was corrected.
+bool probeCorrected(const char* coeffs, double xa, double xb, double top) {
+    const Dictionary dict = Dictionary::parse(
+        std::string("contact multiField;\nmultiFieldCoeffs { ") + coeffs + " }\n", "mpmProperties");
+    auto c = contactOf(dict);
+    const CartesianGrid<2> grid(Vector<2>(0.0, 0.0), Vector<2>(0.1, 0.1), {6, 6});
+    const auto shape = ShapeFunction<2>::New(Dictionary::parse("type quadraticBSpline;\n", "test"));
+    std::vector<Vector<2>> x;
+    std::vector<int> body;
+    const double d = 0.01;
+    for (double px = 0.5 * d; px < 0.6; px += d)
+        for (double py = 0.5 * d; py < top; py += d)
+            for (int b = 0; b < 2; ++b)  // a row in both bodies where they overlap
+                if (b == 0 ? px < xa : px > xb) x.emplace_back(px, py), body.push_back(b);
+    ParticleNodeList<2> list;
+    shape->evaluate(grid, std::span<const Vector<2>>(x), {}, list);
+    const std::size_t n = grid.nodeCount();
+    std::vector<std::vector<double>> mass(2, std::vector<double>(n, 0.0)), volume = mass;
+    std::vector<std::vector<Vector<2>>> gradient(2, std::vector<Vector<2>>(n, Vector<2>::Zero())),
+        position = gradient, velocity = gradient, acceleration = gradient;
+    const double mp = 1.0, Vp = d * d;
+    for (std::size_t p = 0; p < x.size(); ++p)
+        for (std::size_t k = 0; k < list.count[p]; ++k) {
+            const std::size_t I = std::size_t(list.node[p * list.stride + k]);
+            const double N = list.weight[p * list.stride + k];
+            const int b = body[p];
+            mass[b][I] += N * mp;
+            volume[b][I] += N * Vp;
+            position[b][I] += N * mp * x[p];
+            gradient[b][I] += mp * list.gradient[p * list.stride + k];
+        }
+    for (std::size_t I = 0; I < n; ++I) velocity[0][I] = Vector<2>(1, 0), velocity[1][I] = Vector<2>(-1, 0);
+    ContactNodes<2> nodes;
+    nodes.mass = &mass;
+    nodes.massGradient = &gradient;
+    nodes.massPosition = &position;
+    nodes.volume = &volume;
+    nodes.velocity = &velocity;
+    nodes.acceleration = &acceleration;
+    nodes.grid = &grid;
+    nodes.shape = shape.get();
+    nodes.cellSize = 0.1;
+    nodes.cellVolume = 0.01;
+    c->correct(nodes, 1e-3);
+    const std::size_t probe = std::size_t(grid.nodeIndex({3, 3}));
+    return velocity[0][probe].x() < 1.0 - 1e-12;
+}
+
+TEST(MpmContact, SurfaceGapSeesAnOverlapAndAGapAndIsBlindToAWaterline) {
+    // Exactly touching is the knife-edge of both checks (their sums meet the bound to rounding), so
+    // the cases are an overlap of one particle row (0.1 cells: both bodies own the row at 0.325)
+    // and a gap of three rows (0.3 cells: no particle in 0.29..0.32).
+    // The support full: both checks see the overlap, neither the gap.
+    EXPECT_TRUE(probeCorrected("surfaceGap yes;", 0.33, 0.32, 0.6));
+    EXPECT_TRUE(probeCorrected("volumeFraction 1;", 0.33, 0.32, 0.6));
+    EXPECT_FALSE(probeCorrected("surfaceGap yes;", 0.29, 0.32, 0.6));
+    EXPECT_FALSE(probeCorrected("volumeFraction 1;", 0.29, 0.32, 0.6));
+    // A free surface 0.5 cells above the probe (air in the top sixth of the support, the float's
+    // waterline): the volume sum falls to about 1 + 0.07 - 0.17 and the volume check misses the
+    // overlap; the surface gap, read from the centres along the normal, still sees it.
+    EXPECT_TRUE(probeCorrected("surfaceGap yes;", 0.33, 0.32, 0.35));
+    EXPECT_FALSE(probeCorrected("volumeFraction 1;", 0.33, 0.32, 0.35));
+    EXPECT_FALSE(probeCorrected("surfaceGap yes;", 0.29, 0.32, 0.35));
 }
 
 TEST(MpmContact, PairErrorsNameTheFileLineAndBodies) {
