@@ -7,6 +7,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 
@@ -32,6 +33,26 @@ void basis(const Vector<Dim>& s, int order, int offset, Column& p) {
         for (int j = i + 1; j < Dim; ++j) p(q++) = s[i] * s[j];
 }
 
+// dp/dy_i = factor * dp/ds_i (factor = -1/h for s = (x - y)/h), one column per i.
+template <int Dim>
+void basisDerivative(const Vector<Dim>& s, int order, int offset, int m, double factor,
+                     std::array<Column, Dim>& dp) {
+    for (int i = 0; i < Dim; ++i) {
+        Column& d = dp[i];
+        d.setZero(m);
+        d(offset + i) = factor;
+        if (order < 2) continue;
+        int q = offset + Dim;
+        for (int k = 0; k < Dim; ++k, ++q)
+            if (k == i) d(q) = factor * s[i];  // d(s_i^2 / 2)/ds_i
+        for (int k = 0; k < Dim; ++k)
+            for (int l = k + 1; l < Dim; ++l, ++q) {
+                if (k == i) d(q) += factor * s[l];
+                if (l == i) d(q) += factor * s[k];
+            }
+    }
+}
+
 }  // namespace
 
 template <int Dim>
@@ -41,6 +62,14 @@ LeastSquaresOperators<Dim>::LeastSquaresOperators(Options options) : options_(op
                     "; valid orders: 1 (linear basis), 2 (quadratic basis)");
     if (!(options_.minReciprocalCondition > 0.0) || !(options_.minReciprocalCondition < 1.0))
         throw Error("LeastSquaresOperators: minReciprocalCondition must lie in (0, 1)");
+    if (options_.derivative == Derivative::full && options_.form != Form::value)
+        throw Error(
+            "LeastSquaresOperators: the full derivative differentiates the fitted value c_0(y): it needs "
+            "the value form");
+    if (!(options_.tikhonov >= 0.0) || !(options_.tikhonov <= 1e-3))
+        throw Error("LeastSquaresOperators: tikhonov must lie in [0, 1e-3] (the note's 1e-12 tr M)");
+    if (!(options_.maxSupportGrowth >= 1.0) || !(options_.supportGrowthStep > 1.0))
+        throw Error("LeastSquaresOperators: maxSupportGrowth must be >= 1 and supportGrowthStep > 1");
 }
 
 template <int Dim>
@@ -57,6 +86,8 @@ std::string LeastSquaresOperators<Dim>::statusName(Status status) {
             return "too few neighbours with a positive weight for the basis";
         case Status::illConditioned:
             return "singular or ill-conditioned moment matrix";
+        case Status::shepard:
+            return "Shepard (order 0) fallback";
     }
     return "unknown";
 }
@@ -91,16 +122,10 @@ void LeastSquaresOperators<Dim>::rebuild(const std::vector<Vector<Dim>>& points,
 }
 
 template <int Dim>
-void LeastSquaresOperators<Dim>::rebuild(const std::vector<Vector<Dim>>& points,
+void LeastSquaresOperators<Dim>::prepare(const std::vector<Vector<Dim>>& points,
                                          const std::vector<Vector<Dim>>& x, const NeighbourList& rows,
-                                         const std::vector<double>& weights,
                                          const std::vector<double>& scale) {
     const std::size_t n = points.size();
-    if (rows.size() != n || scale.size() != n || weights.size() != rows.pairCount())
-        throw Error("LeastSquaresOperators: " + std::to_string(n) + " points, " +
-                    std::to_string(rows.size()) + " rows, " + std::to_string(scale.size()) + " scales, " +
-                    std::to_string(weights.size()) + " weights for " + std::to_string(rows.pairCount()) +
-                    " pairs");
     if (options_.form == Form::difference && n != x.size())
         throw Error("LeastSquaresOperators: the difference form evaluates at the particles (" +
                     std::to_string(x.size()) + "), not at " + std::to_string(n) + " other points");
@@ -118,101 +143,254 @@ void LeastSquaresOperators<Dim>::rebuild(const std::vector<Vector<Dim>>& points,
     offsets_.assign(rows.offsets().begin(), rows.offsets().end());
     indices_.assign(rows.indices().begin(), rows.indices().end());
     status_.resize(n);
+    supportFactor_.assign(n, 1.0);
     const std::size_t pairs = indices_.size();
     const bool second = options_.order == 2;
-    const bool valueForm = options_.form == Form::value;
     // resize keeps the capacity: no reallocation while the pair count does not grow.
     gradient_.resize(pairs);
     hessian_.resize(second ? pairs : 0);
     laplacian_.resize(second ? pairs : 0);
-    value_.resize(valueForm ? pairs : 0);
+    value_.resize(options_.form == Form::value ? pairs : 0);
+}
 
+template <int Dim>
+void LeastSquaresOperators<Dim>::zeroPoint(std::size_t a) {
+    for (std::size_t k = offsets_[a]; k < offsets_[a + 1]; ++k) {
+        gradient_[k].setZero();
+        if (options_.order == 2) {
+            hessian_[k].setZero();
+            laplacian_[k] = 0.0;
+        }
+        if (options_.form == Form::value) value_[k] = 0.0;
+    }
+}
+
+template <int Dim>
+void LeastSquaresOperators<Dim>::shepardPoint(std::size_t a, const std::vector<double>& w) {
+    // Order 0: f(y) = sum_b w_b f_b / sum_b w_b, a partition of unity, with zero derivatives.
+    double sum = 0.0;
+    for (std::size_t k = offsets_[a]; k < offsets_[a + 1]; ++k)
+        if (w[k] > 0.0) sum += w[k];
+    zeroPoint(a);
+    if (!(sum > 0.0) || !std::isfinite(sum)) return;  // nothing to average: the point stays failed
+    status_[a] = Status::shepard;
+    if (options_.form == Form::value)
+        for (std::size_t k = offsets_[a]; k < offsets_[a + 1]; ++k) value_[k] = w[k] > 0.0 ? w[k] / sum : 0.0;
+}
+
+template <int Dim>
+typename LeastSquaresOperators<Dim>::Status LeastSquaresOperators<Dim>::fitPoint(
+    std::size_t a, const Vector<Dim>& y, const std::vector<Vector<Dim>>& x,
+    const std::vector<double>& weights, const Vector<Dim>* dWeights, double scale) {
+    const std::size_t k0 = offsets_[a], k1 = offsets_[a + 1];
+    const bool second = options_.order == 2;
+    const bool valueForm = options_.form == Form::value;
     const int m = basisSize();
     const int offset = valueForm ? 1 : 0;
-    parallelForWork(n, pairs, [&](std::size_t a) {
-        const std::size_t k0 = offsets_[a], k1 = offsets_[a + 1];
-        const double invScale = 1.0 / scale[a];
-        double sum = 0.0;
-        int used = 0;
+    const double invScale = 1.0 / scale;
+    double sum = 0.0;
+    int used = 0;
+    for (std::size_t k = k0; k < k1; ++k) {
+        const double w = weights[k];
+        if (!(w > 0.0)) continue;
+        sum += w;
+        // In the difference form a pair at the point itself has p = 0 and carries nothing.
+        if (valueForm || x[indices_[k]] != y) ++used;
+    }
+    if (used < std::max(m, options_.minNeighbours) || !std::isfinite(sum)) return Status::tooFewNeighbours;
+
+    // Normalised weights: phi is unchanged and M is O(1). A common factor of all weights, even one
+    // that varies with y, leaves c_0(y) unchanged, so the full derivative may scale dw by the same
+    // 1/sum and leave d(sum)/dy out.
+    const double invSum = 1.0 / sum;
+    Matrix M = Matrix::Zero(m, m);
+    Column p(m);
+    for (std::size_t k = k0; k < k1; ++k) {
+        const double w = weights[k];
+        if (!(w > 0.0)) continue;
+        basis<Dim>(Vector<Dim>((x[indices_[k]] - y) * invScale), options_.order, offset, p);
+        M.noalias() += (w * invSum) * p * p.transpose();
+    }
+    if (options_.tikhonov > 0.0) M.diagonal().array() += options_.tikhonov * M.trace();
+    if (!M.allFinite()) return Status::illConditioned;
+    const Eigen::SelfAdjointEigenSolver<Matrix> eigen(M, Eigen::EigenvaluesOnly);
+    const auto& lambda = eigen.eigenvalues();  // ascending
+    if (eigen.info() != Eigen::Success || !(lambda(m - 1) > 0.0) ||
+        !(lambda(0) >= options_.minReciprocalCondition * lambda(m - 1)))
+        return Status::illConditioned;
+    const Eigen::LDLT<Matrix> ldlt(M);
+
+    // The full derivative's per-point vectors: a = M^-1 e_0 and v_i = M^-1 (dM/dy_i) a.
+    const bool full = dWeights != nullptr;
+    Column e0 = Column::Zero(m), a0(m);
+    std::array<Column, Dim> v;
+    std::array<Column, Dim> dp;  // dp/dy_i of the current pair
+    if (full) {
+        e0(0) = 1.0;
+        a0 = ldlt.solve(e0);
+        std::array<Matrix, Dim> dM;
+        for (int i = 0; i < Dim; ++i) dM[i] = Matrix::Zero(m, m);
         for (std::size_t k = k0; k < k1; ++k) {
             const double w = weights[k];
             if (!(w > 0.0)) continue;
-            sum += w;
-            // In the difference form a pair at the point itself has p = 0 and carries nothing.
-            if (valueForm || x[indices_[k]] != points[a]) ++used;
+            const Vector<Dim> s((x[indices_[k]] - y) * invScale);
+            basis<Dim>(s, options_.order, offset, p);
+            basisDerivative<Dim>(s, options_.order, offset, m, -invScale, dp);
+            for (int i = 0; i < Dim; ++i) {
+                const Column wdp = (w * invSum) * dp[i];
+                dM[i].noalias() +=
+                    (dWeights[k][i] * invSum) * p * p.transpose() + wdp * p.transpose() + p * wdp.transpose();
+            }
         }
-        auto fail = [&](Status why) {
-            status_[a] = why;
-            for (std::size_t k = k0; k < k1; ++k) {
-                gradient_[k].setZero();
-                if (second) {
-                    hessian_[k].setZero();
-                    laplacian_[k] = 0.0;
-                }
-                if (valueForm) value_[k] = 0.0;
+        for (int i = 0; i < Dim; ++i) v[i] = ldlt.solve(dM[i] * a0);
+    }
+
+    const double invScale2 = invScale * invScale;
+    for (std::size_t k = k0; k < k1; ++k) {
+        const double w = weights[k];
+        if (!(w > 0.0)) {  // outside the weight's support: this pair carries nothing
+            gradient_[k].setZero();
+            if (second) {
+                hessian_[k].setZero();
+                laplacian_[k] = 0.0;
+            }
+            if (valueForm) value_[k] = 0.0;
+            continue;
+        }
+        const Vector<Dim> s((x[indices_[k]] - y) * invScale);
+        basis<Dim>(s, options_.order, offset, p);
+        const Column phi = (w * invSum) * ldlt.solve(p);
+        if (valueForm) value_[k] = phi(0);
+        if (full) {
+            basisDerivative<Dim>(s, options_.order, offset, m, -invScale, dp);
+            const double ap = a0.dot(p);
+            for (int i = 0; i < Dim; ++i)
+                gradient_[k][i] = dWeights[k][i] * invSum * ap + (w * invSum) * (a0.dot(dp[i]) - v[i].dot(p));
+        } else {
+            for (int i = 0; i < Dim; ++i) gradient_[k][i] = phi(offset + i) * invScale;
+        }
+        if (second) {
+            Tensor<Dim>& H = hessian_[k];
+            int q = offset + Dim;
+            for (int i = 0; i < Dim; ++i) H(i, i) = phi(q++) * invScale2;
+            for (int i = 0; i < Dim; ++i)
+                for (int j = i + 1; j < Dim; ++j) H(i, j) = H(j, i) = phi(q++) * invScale2;
+            laplacian_[k] = H.trace();
+        }
+    }
+    return Status::ok;
+}
+
+template <int Dim>
+void LeastSquaresOperators<Dim>::rebuild(const std::vector<Vector<Dim>>& points,
+                                         const std::vector<Vector<Dim>>& x, const NeighbourList& rows,
+                                         const std::vector<double>& weights,
+                                         const std::vector<double>& scale) {
+    const std::size_t n = points.size();
+    if (rows.size() != n || scale.size() != n || weights.size() != rows.pairCount())
+        throw Error("LeastSquaresOperators: " + std::to_string(n) + " points, " +
+                    std::to_string(rows.size()) + " rows, " + std::to_string(scale.size()) + " scales, " +
+                    std::to_string(weights.size()) + " weights for " + std::to_string(rows.pairCount()) +
+                    " pairs");
+    if (options_.derivative == Derivative::full)
+        throw Error("LeastSquaresOperators: the full derivative needs dW/dy: rebuild with a fitWeight");
+    if (options_.fallback == Fallback::growSupport)
+        throw Error("LeastSquaresOperators: growSupport re-weighs with a larger h: rebuild with a fitWeight");
+    prepare(points, x, rows, scale);
+    parallelForWork(n, indices_.size(), [&](std::size_t a) {
+        status_[a] = fitPoint(a, points[a], x, weights, nullptr, scale[a]);
+        if (status_[a] == Status::ok) return;
+        zeroPoint(a);
+        if (options_.fallback == Fallback::shepard) shepardPoint(a, weights);
+    });
+    finish(points, weights);
+}
+
+template <int Dim>
+void LeastSquaresOperators<Dim>::rebuild(const std::vector<Vector<Dim>>& points,
+                                         const std::vector<Vector<Dim>>& x, const NeighbourList& rows,
+                                         const std::vector<double>& h, const FitWeight& weight) {
+    const std::size_t n = points.size();
+    if (rows.size() != n || h.size() != n)
+        throw Error("LeastSquaresOperators: " + std::to_string(n) + " points, " +
+                    std::to_string(rows.size()) + " rows, " + std::to_string(h.size()) + " support radii");
+    prepare(points, x, rows, h);
+    const bool full = options_.derivative == Derivative::full;
+    weightBuffer_.resize(indices_.size());
+    dWeightBuffer_.resize(full ? indices_.size() : 0);
+    const bool grow = options_.fallback == Fallback::growSupport;
+    parallelForWork(n, indices_.size(), [&](std::size_t a) {
+        const auto weigh = [&](double radius) {
+            for (std::size_t k = offsets_[a]; k < offsets_[a + 1]; ++k) {
+                const Vector<Dim> r = x[indices_[k]] - points[a];
+                const double d = r.norm();
+                weightBuffer_[k] = weight.fitWeight(d, radius);
+                // dw/dy = dw/dd * dd/dy, dd/dy = -(x - y)/d; dW/dd = 0 at d = 0 (FitWeight's contract).
+                if (full)
+                    dWeightBuffer_[k] = d > 0.0
+                                            ? Vector<Dim>(r * (-weight.fitWeightDerivative(d, radius) / d))
+                                            : Vector<Dim>::Zero();
             }
         };
-        if (used < m || !std::isfinite(sum)) return fail(Status::tooFewNeighbours);
-
-        // Normalised weights: phi is unchanged and M is O(1).
-        const double invSum = 1.0 / sum;
-        Matrix M = Matrix::Zero(m, m);
-        Column p(m);
-        for (std::size_t k = k0; k < k1; ++k) {
-            const double w = weights[k];
-            if (!(w > 0.0)) continue;
-            basis<Dim>(Vector<Dim>((x[indices_[k]] - points[a]) * invScale), options_.order, offset, p);
-            M.noalias() += (w * invSum) * p * p.transpose();
+        double factor = 1.0;
+        for (;;) {
+            weigh(factor * h[a]);
+            status_[a] = fitPoint(a, points[a], x, weightBuffer_, full ? dWeightBuffer_.data() : nullptr,
+                                  factor * h[a]);
+            if (status_[a] == Status::ok || !grow || factor >= options_.maxSupportGrowth) break;
+            factor = std::min(factor * options_.supportGrowthStep, options_.maxSupportGrowth);
         }
-        if (!M.allFinite()) return fail(Status::illConditioned);
-        const Eigen::SelfAdjointEigenSolver<Matrix> eigen(M, Eigen::EigenvaluesOnly);
-        const auto& lambda = eigen.eigenvalues();  // ascending
-        if (eigen.info() != Eigen::Success || !(lambda(m - 1) > 0.0) ||
-            !(lambda(0) >= options_.minReciprocalCondition * lambda(m - 1)))
-            return fail(Status::illConditioned);
-        const Eigen::LDLT<Matrix> ldlt(M);
-        status_[a] = Status::ok;
-
-        const double invScale2 = invScale * invScale;
-        for (std::size_t k = k0; k < k1; ++k) {
-            const double w = weights[k];
-            if (!(w > 0.0)) {  // outside the weight's support: this pair carries nothing
-                gradient_[k].setZero();
-                if (second) {
-                    hessian_[k].setZero();
-                    laplacian_[k] = 0.0;
-                }
-                if (valueForm) value_[k] = 0.0;
-                continue;
-            }
-            basis<Dim>(Vector<Dim>((x[indices_[k]] - points[a]) * invScale), options_.order, offset, p);
-            const Column phi = (w * invSum) * ldlt.solve(p);
-            if (valueForm) value_[k] = phi(0);
-            for (int i = 0; i < Dim; ++i) gradient_[k][i] = phi(offset + i) * invScale;
-            if (second) {
-                Tensor<Dim>& H = hessian_[k];
-                int q = offset + Dim;
-                for (int i = 0; i < Dim; ++i) H(i, i) = phi(q++) * invScale2;
-                for (int i = 0; i < Dim; ++i)
-                    for (int j = i + 1; j < Dim; ++j) H(i, j) = H(j, i) = phi(q++) * invScale2;
-                laplacian_[k] = H.trace();
-            }
+        supportFactor_[a] = factor;
+        if (status_[a] == Status::ok) return;
+        zeroPoint(a);
+        if (options_.fallback == Fallback::shepard) {
+            weigh(h[a]);
+            shepardPoint(a, weightBuffer_);
         }
     });
+    finish(points, weightBuffer_);
+}
 
-    if (options_.onFailure == OnFailure::flag) return;
-    const auto it = std::find_if(status_.begin(), status_.end(), [](Status s) { return s != Status::ok; });
-    if (it == status_.end()) return;
-    const std::size_t a = std::size_t(it - status_.begin());
-    const auto count =
-        std::count_if(status_.begin(), status_.end(), [](Status s) { return s != Status::ok; });
+template <int Dim>
+void LeastSquaresOperators<Dim>::finish(const std::vector<Vector<Dim>>& points,
+                                        const std::vector<double>& w) {
+    counts_ = {};
+    std::size_t first = status_.size();
+    for (std::size_t a = 0; a < status_.size(); ++a) {
+        if (status_[a] == Status::shepard) {
+            ++counts_.shepard;
+        } else if (status_[a] != Status::ok) {
+            ++counts_.failed;
+            if (first == status_.size()) first = a;
+        } else if (supportFactor_[a] > 1.0) {
+            ++counts_.grown;
+        }
+    }
+    if (options_.onFailure == OnFailure::flag || counts_.failed == 0) return;
+    const std::size_t a = first;
+    int positive = 0;
+    for (std::size_t k = offsets_[a]; k < offsets_[a + 1]; ++k)
+        if (k < w.size() && w[k] > 0.0) ++positive;
     std::ostringstream msg;
     msg << "LeastSquaresOperators: point " << a << " at " << pointText<Dim>(points[a]) << " has a "
-        << statusName(*it) << " (" << (offsets_[a + 1] - offsets_[a]) << " neighbours, order "
-        << options_.order << ", " << m << " basis terms";
-    if (count > 1) msg << "; " << count - 1 << " more points fail alike";
+        << statusName(status_[a]) << " (" << (offsets_[a + 1] - offsets_[a]) << " neighbours, " << positive
+        << " with a positive weight, order " << options_.order << ", " << basisSize() << " basis terms";
+    if (options_.minNeighbours > basisSize())
+        msg << ", at least " << options_.minNeighbours << " neighbours asked";
+    if (options_.fallback == Fallback::growSupport)
+        msg << ", support grown to " << supportFactor_[a] << " h";
+    else if (options_.fallback == Fallback::shepard)
+        msg << ", no neighbour with a positive weight for the Shepard fallback";
+    if (counts_.failed > 1) msg << "; " << counts_.failed - 1 << " more points fail alike";
     msg << "). Too few neighbours, or all on a line or plane: increase h relative to the particle spacing,"
-           " or remove isolated particles.";
+           " or remove isolated particles";
+    if (options_.fallback == Fallback::none)
+        msg << ", or choose a fallback (growSupport: h grown up to x" << options_.maxSupportGrowth
+            << " with rows that cover it; shepard: an order-0 fit with zero gradient)";
+    else if (options_.fallback == Fallback::growSupport)
+        msg << "; growSupport needs rows holding the neighbours within " << options_.maxSupportGrowth
+            << " h, and the shepard fallback saves any point with one neighbour";
+    msg << ".";
     throw Error(msg.str());
 }
 

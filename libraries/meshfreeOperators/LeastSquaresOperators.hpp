@@ -43,11 +43,39 @@
 // and status() says why, for callers with a fallback (Interpolation falls back to Shepard).
 // Otherwise M_a^-1 p_b comes from the LDLT factorisation of M_a.
 //
+// Fit weights by name (the finite pointset method, von Nida 2005 ch. 3; the FPM method note §2):
+// rebuild(points, x, rows, h, fitWeight) takes w_ab = W(|x_b - y_a| / h_a) of the family fitWeight
+// (fitWeights/FitWeight.hpp), squared or not as the weight says, with h_a the support radius and
+// the scale. Then:
+//
+//   * Derivative::full (value form): the gradient weights are those of the derivative of the
+//     approximant c_0(y) with respect to the evaluation point y (the thesis's 3.11), with the
+//     weights and the basis moving with y (h_a held fixed): with a = M^-1 e_0,
+//         d phi_b[0] / dy_k = (dw_b/dy_k) a.p_b + w_b a.(dp_b/dy_k) - w_b (M^-1 (dM/dy_k) a).p_b,
+//         dM/dy_k = sum_b (dw_b/dy_k) p_b p_b^T + w_b (dp_b/dy_k p_b^T + p_b dp_b/dy_k^T),
+//         dp_b/dy_k = -(1/h_a) dp/ds_k,
+//     so grad f(y) = sum_b (d phi_b[0] / dy) f_b. Derivative::diffuse (default) keeps the fit's
+//     linear coefficients c_1 / h. Both reproduce the gradient of a linear field exactly (c_0(y)
+//     is then the field itself for every y). Hessians stay the fit's coefficients either way.
+//   * Fallback::growSupport: a failing point is refitted with h_a x 1.2, x 1.44, ... up to
+//     x maxSupportGrowth (2): the caller's rows must hold the neighbours within
+//     maxSupportGrowth h_a (weights beyond the current radius are zero), the factor taken is
+//     supportFactor()[a]. The operator does not search: the rows are the caller's.
+//   * Fallback::shepard (either rebuild): a failing point gets the order-0 fit, value weights
+//     w_ab / sum_b w_ab and zero gradient and Hessian, status Status::shepard.
+//   The fallbacks taken are counted per rebuild (fallbackCounts(), for a solver's log); a point
+//   that no fallback saves fails as before (Error or flag). Options::minNeighbours (the note's
+//   2(d+1)) raises the neighbour count below which a point fails, Options::tikhonov shifts M by
+//   eps tr(M) I before the eigenvalue check and the solve (the note's eps ~ 1e-12: it perturbs
+//   reproduction by about eps times the condition number, and its own y-derivative is left out
+//   of the full derivative).
+//
 // Memory: the pair arrays are resized, never shrunk, so a rebuild whose neighbour counts do not
 // grow reallocates nothing (capacity() is the test's handle). Points are independent
 // (parallelFor): results are bit-identical for any thread count.
 #include "core/Tensor.hpp"
 #include "kernels/Kernel.hpp"
+#include "meshfreeOperators/fitWeights/FitWeight.hpp"
 #include "particles/NeighbourList.hpp"
 
 #include <cstddef>
@@ -62,13 +90,28 @@ public:
     enum class Form { difference, value };
     enum class OnFailure { throwError, flag };
     enum class KernelWeight { value, radialDerivative };
-    enum class Status : unsigned char { ok, tooFewNeighbours, illConditioned };
+    enum class Status : unsigned char { ok, tooFewNeighbours, illConditioned, shepard };
+    enum class Derivative { diffuse, full };
+    enum class Fallback { none, growSupport, shepard };
 
     struct Options {
         int order = 1;  // 1: linear basis (gradient); 2: quadratic (gradient, Hessian, Laplacian)
         Form form = Form::difference;
         double minReciprocalCondition = 1e-10;
         OnFailure onFailure = OnFailure::throwError;
+        Derivative derivative = Derivative::diffuse;  // full: value form and a fit weight
+        Fallback fallback = Fallback::none;           // growSupport: a fit weight
+        int minNeighbours = 0;                        // with a positive weight; 0: the basis size
+        double tikhonov = 0.0;                        // M + tikhonov tr(M) I; in [0, 1e-3]
+        double maxSupportGrowth = 2.0;                // growSupport's largest factor on h
+        double supportGrowthStep = 1.2;               // and its factor per try
+    };
+
+    // Fallbacks taken by the last rebuild.
+    struct FallbackCounts {
+        std::size_t grown = 0;    // fitted with a grown support
+        std::size_t shepard = 0;  // fitted by Shepard (order 0)
+        std::size_t failed = 0;   // no fit (flagged; with throwError the rebuild threw)
     };
 
     explicit LeastSquaresOperators(Options options);
@@ -83,6 +126,10 @@ public:
     void rebuild(const std::vector<Vector<Dim>>& points, const std::vector<Vector<Dim>>& x,
                  const NeighbourList& rows, const std::vector<double>& volume, const std::vector<double>& h,
                  const Kernel& kernel, KernelWeight shape = KernelWeight::value);
+    // Fit weights by name: w_ab = weight.fitWeight(|x_b - y_a|, h_a), h_a the support radius and
+    // the scale (see the top of this file; the full derivative and growSupport need this form).
+    void rebuild(const std::vector<Vector<Dim>>& points, const std::vector<Vector<Dim>>& x,
+                 const NeighbourList& rows, const std::vector<double>& h, const FitWeight& weight);
 
     const Options& options() const { return options_; }
     // Number of basis terms: Dim (+ Dim(Dim+1)/2 at order 2) (+ 1 in value form).
@@ -93,6 +140,9 @@ public:
     const std::vector<NeighbourList::Index>& indices() const { return indices_; }
     const std::vector<Status>& status() const { return status_; }
     static std::string statusName(Status status);
+    const FallbackCounts& fallbackCounts() const { return counts_; }
+    // The factor on h_a each point was fitted with (1 unless growSupport grew it).
+    const std::vector<double>& supportFactor() const { return supportFactor_; }
 
     // Per-pair weights (see the top of this file); zero at failed points.
     const std::vector<Vector<Dim>>& gradient() const { return gradient_; }
@@ -112,6 +162,17 @@ public:
 
 private:
     void checkField(std::size_t n, const char* what) const;
+    // Fits point a at y with the pair weights w[k] (and dw[k] = dw/dy for the full derivative, else
+    // null) and scale h: writes its pair arrays and returns ok, or returns why it failed (writing
+    // nothing).
+    Status fitPoint(std::size_t a, const Vector<Dim>& y, const std::vector<Vector<Dim>>& x,
+                    const std::vector<double>& w, const Vector<Dim>* dw, double h);
+    void shepardPoint(std::size_t a, const std::vector<double>& w);
+    void zeroPoint(std::size_t a);
+    void prepare(const std::vector<Vector<Dim>>& points, const std::vector<Vector<Dim>>& x,
+                 const NeighbourList& rows, const std::vector<double>& scale);
+    // Counts the fallbacks and, with throwError, throws for the first failing point.
+    void finish(const std::vector<Vector<Dim>>& points, const std::vector<double>& w);
     double centre(const std::vector<double>& f, std::size_t a) const {
         return options_.form == Form::difference ? f[a] : 0.0;
     }
@@ -121,7 +182,10 @@ private:
     std::vector<std::size_t> offsets_;
     std::vector<NeighbourList::Index> indices_;
     std::vector<Status> status_;
-    std::vector<double> weightBuffer_;  // kernel weights of the kernel rebuild
+    std::vector<double> weightBuffer_;        // weights of the kernel and fit-weight rebuilds
+    std::vector<Vector<Dim>> dWeightBuffer_;  // their y-derivatives (full derivative)
+    std::vector<double> supportFactor_;
+    FallbackCounts counts_;
     std::vector<Vector<Dim>> gradient_;
     std::vector<Tensor<Dim>> hessian_;
     std::vector<double> laplacian_;
