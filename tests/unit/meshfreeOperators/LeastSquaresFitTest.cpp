@@ -20,6 +20,7 @@
 #include "meshfreeOperators/fitWeights/FitWeight.hpp"
 
 #include <gtest/gtest.h>
+#include <omp.h>
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -478,6 +479,74 @@ TEST(LeastSquaresFit, OptionsThatCannotWorkAreRefused) {
     const std::vector<Vector<2>> x{Vector<2>(0, 0)};
     const NeighbourList rows = rowsWithin<2>(x, x, 1.0);
     EXPECT_THROW(ops.rebuild(x, x, rows, std::vector<double>{1.0}, std::vector<double>{1.0}), Error);
+}
+
+// growSupport with rows that reach only h: no larger support can help, and the Error says the
+// rows must cover 2 h.
+TEST(LeastSquaresFit, GrowSupportWithShortRowsIsAnErrorNamingTheRows) {
+    const Sparse s = sparsePoint();
+    const NeighbourList rows = rowsWithin<2>(s.y, s.x, s.h);
+    const auto weight = weightNamed("wendlandC2", true);
+    auto o = fitOptions<2>(1, Ops<2>::Derivative::diffuse);
+    o.fallback = Ops<2>::Fallback::growSupport;
+    Ops<2> ops(o);
+    try {
+        ops.rebuild(s.y, s.x, rows, {s.h}, *weight);
+        FAIL() << "no Error for rows that cannot grow";
+    } catch (const Error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("point 0 at (0 0)"), std::string::npos) << what;
+        EXPECT_NE(what.find("support grown to 2 h"), std::string::npos) << what;
+        EXPECT_NE(what.find("rows holding the neighbours within 2 h"), std::string::npos) << what;
+    }
+}
+
+// An ill-conditioned M (enough neighbours, all on a line) takes the Shepard fallback too.
+TEST(LeastSquaresFit, NeighboursOnALineFallBackToShepard) {
+    std::vector<Vector<2>> x;
+    for (int i = -4; i <= 4; ++i) x.emplace_back(0.1 * i, 0.05);
+    const std::vector<Vector<2>> y{Vector<2>(0.0, 0.05)};
+    const NeighbourList rows = rowsWithin<2>(y, x, 1.0);
+    const auto weight = weightNamed("truncatedGaussian", false);
+    auto o = fitOptions<2>(1, Ops<2>::Derivative::full);
+    o.fallback = Ops<2>::Fallback::shepard;
+    Ops<2> ops(o);
+    ops.rebuild(y, x, rows, {1.0}, *weight);
+    EXPECT_EQ(ops.status()[0], Ops<2>::Status::shepard);
+    EXPECT_EQ(ops.fallbackCounts().shepard, 1u);
+    std::vector<double> f;
+    for (const auto& p : x) f.push_back(2.0 + p[0]);
+    EXPECT_NEAR(ops.valueOf(f)[0], 2.0, 1e-14);  // symmetric neighbours: Shepard is exact here
+    EXPECT_EQ(ops.gradientOf(f)[0].norm(), 0.0);
+}
+
+// The weights are computed once per point and applied to every field; a rebuild on moved points
+// with the same pair count reallocates nothing, and the result is bit-identical for any thread
+// count (points are independent).
+TEST(LeastSquaresFit, RebuildReusesMemoryAndIsThreadCountIndependent) {
+    const Lattice<3> c = lattice<3>(9);
+    const double h = 2.2 * c.dx;
+    const Points<3> pts = evaluationPoints(c, h);
+    const NeighbourList rows = rowsWithin<3>(pts.y, c.x, 1.01 * h);
+    const std::vector<double> hs(pts.y.size(), h);
+    const auto weight = weightNamed("truncatedGaussian", true);
+    std::vector<double> fx;
+    for (const auto& x : c.x) fx.push_back(std::sin(3.0 * x[0]) + x[1] * x[2]);
+    std::vector<std::vector<Vector<3>>> results;
+    for (const int threads : {1, 2, 4}) {
+        omp_set_num_threads(threads);
+        Ops<3> ops(fitOptions<3>(2, Ops<3>::Derivative::full));
+        ops.rebuild(pts.y, c.x, rows, hs, *weight);
+        const std::size_t capacity = ops.capacity();
+        std::vector<Vector<3>> moved = pts.y;
+        for (auto& p : moved) p[0] += 1e-3 * h;
+        ops.rebuild(moved, c.x, rows, hs, *weight);
+        EXPECT_EQ(ops.capacity(), capacity);
+        results.push_back(ops.gradientOf(fx));
+    }
+    omp_set_num_threads(1);
+    for (std::size_t r = 1; r < results.size(); ++r)
+        for (std::size_t a = 0; a < results[0].size(); ++a) EXPECT_EQ(results[r][a], results[0][a]) << a;
 }
 
 }  // namespace
