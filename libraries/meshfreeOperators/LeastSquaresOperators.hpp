@@ -43,7 +43,7 @@
 // and status() says why, for callers with a fallback (Interpolation falls back to Shepard).
 // Otherwise M_a^-1 p_b comes from the LDLT factorisation of M_a.
 //
-// Fit weights by name (the finite pointset method, von Nida 2005 ch. 3; the FPM method note §2):
+// Fit weights by name (the finite pointset method, von Nida 2005 ch. 3; doc/methods/fpm.md §2):
 // rebuild(points, x, rows, h, fitWeight) takes w_ab = W(|x_b - y_a| / h_a) of the family fitWeight
 // (fitWeights/FitWeight.hpp), squared or not as the weight says, with h_a the support radius and
 // the scale. Then:

@@ -1,7 +1,7 @@
 #pragma once
 // Weights of the least-squares fit: the family `fitWeight` (doc/models/fitWeight/).
 //
-// The finite pointset method's fit (von Nida 2005, Def. 3.3-3.5; the FPM method note §2)
+// The finite pointset method's fit (von Nida 2005, Def. 3.3-3.5; doc/methods/fpm.md §2)
 // weighs neighbour x_j of the evaluation point y by W(q), q = |x_j - y| / h, with the support
 // radius h itself (the note's h = H: no kernel factor kappa) and
 //

@@ -4,7 +4,7 @@
 //     W(q)  = exp(-alpha q^2)              for q <= 1, else 0
 //     dW/dq = -2 alpha q exp(-alpha q^2)   (zero at q = 0, as Def. 3.3 asks)
 //
-// The form is the one the FPM method note §2 recalls from the Kuhnert / Tiwari finite pointset
+// The form is the one doc/methods/fpm.md §2 recalls from the Kuhnert / Tiwari finite pointset
 // papers, with "alpha of order 2-8"; it was not checked against them (a search of the stored
 // literature found no source), so the default alpha = 6.25 is a choice, not a citation. Why 6.25:
 // W(1) = exp(-6.25) = 1.9e-3, so the jump that truncation leaves at q = 1 is two thousandths of

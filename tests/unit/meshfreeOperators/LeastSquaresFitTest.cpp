@@ -1,5 +1,5 @@
 // The least-squares fit of the finite pointset method on the shared operator (von Nida 2005 ch. 3;
-// the FPM method note §2 and §4b R1, R2): fit weights by name, squared or not, the diffuse and
+// doc/methods/fpm.md §2 and §4b R1, R2): fit weights by name, squared or not, the diffuse and
 // the full derivative (3.11), Tikhonov shift, and the fallbacks for a point the fit cannot serve.
 //
 // Clouds: a jittered lattice on [0, 1]^d with spacing dx and support radius h = 2.2 dx (the
