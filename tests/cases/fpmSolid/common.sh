@@ -1,0 +1,25 @@
+# Shared by the fpmSolid case scripts: $1 = build directory, $2 = source root.
+set -euo pipefail
+BUILD="$1"
+SOURCE="$2"
+export PATH="$BUILD/bin:$PATH"
+WORK="$(mktemp -d "${TMPDIR:-/tmp}/mfdyn-fpm.XXXXXX")"
+trap 'rm -rf "$WORK"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+# copyTutorial <name> <destination>: a clean copy of tutorials/fpmSolid/<name>.
+copyTutorial() {
+    cp -r "$SOURCE/tutorials/fpmSolid/$1" "$2"
+    rm -rf "$2"/log.* "$2"/postProcessing "$2"/[0-9]* "$2"/*.png "$2"/particles.pvd
+}
+# run <case> <application>: runs it with its log in the case.
+run() {
+    "$2" -case "$1" > "$1/log.$2" 2>&1 || fail "$2 on $1: $(tail -n 20 "$1/log.$2")"
+}
+# entry <file> <key>: the value of `key value;` in a dictionary file.
+entry() {
+    awk -v k="$2" '$1 == k { v = $2; sub(/;$/, "", v); print v; found = 1 } END { if (!found) exit 1 }' "$1"
+}
+# fieldRange <case> <time> <field.component>: "min max" from particleInfo.
+fieldRange() {
+    particleInfo -case "$1" -time "$2" | awk -v f="$3" '$1 == f { if ($2 ~ /^[a-zA-Z]/) print $3, $4; else print $2, $3; found = 1 } END { if (!found) exit 1 }'
+}
