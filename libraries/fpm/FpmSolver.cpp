@@ -339,7 +339,22 @@ void FpmSolver<Dim>::step(double dt) {
     {
         auto timed = phase("fit");
         hField_.assign(n, h_);
-        fit_.rebuild(x_, x_, rows_, hField_, *fitWeight_);
+        try {
+            fit_.rebuild(x_, x_, rows_, hField_, *fitWeight_);
+        } catch (const InputError&) {
+            throw;
+        } catch (const RunError&) {
+            throw;
+        } catch (const Error& e) {
+            // The fit's own diagnosis (point = particle index on this process, its position and
+            // neighbour counts, the remedies), with the time and the solver's remedy. Rank-local:
+            // with several ranks the others would wait (no rank decomposition yet).
+            throw RunError(
+                "phase fit, step " + std::to_string(time().timeIndex() + 1) +
+                ", t = " + formatKeywordNumber(time().value() + dt) + ": " + e.what() +
+                " In constant/fpmProperties: a larger smoothingLength, or fitFallback growSupport | "
+                "shepard.");
+        }
         // the weights once per particle, applied to the Dim components of v
         gradV_ = fit_.gradientOf(v_);
         neighboursPerParticle_ = n ? double(rows_.offsets()[n]) / double(n) : 0.0;
