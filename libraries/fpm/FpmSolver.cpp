@@ -20,6 +20,7 @@
 //     smoothingLength 1.5;              // or h itself (not both)
 //     spacing    0.75;                  // optional: the particle spacing (default: the largest V^(1/d))
 //     motion     { velocity prescribed; omega 1; axis (0 0 -1); centre (0 0 0); }   // or { velocity frozen; }
+//     initialState { type rigidRotation; omega (0 0 -1); }   // optional, with velocity frozen: v at a fresh start
 //     initialStress { S (10 -10 0 0 0 0); shape { type box; min (-9 -9 -9); max (0 9 9); } }  // optional
 //
 // S is given as (xx yy zz xy yz xz); initialStress is applied at a fresh start to the particles
@@ -40,6 +41,7 @@
 #include "core/Log.hpp"
 #include "core/Parallel.hpp"
 #include "fpm/RotationPart.hpp"
+#include "solver/InitialState.hpp"
 #include "solver/SolverRegistry.hpp"
 #include "solver/SolverRun.hpp"
 
@@ -148,6 +150,10 @@ KeywordSchema FpmSolver<Dim>::keywords() {
         .optional()
         .dictionary("motion", "the particle motion: a prescribed rigid rotation, or frozen")
         .nested(&FpmSolver<Dim>::motionKeywords)
+        .dictionary("initialState",
+                    "with velocity frozen: the velocity set at a fresh start (an initialState type, e.g. "
+                    "rigidRotation: the rotation part on fixed particles, as in the thesis's coupled run)")
+        .optional()
         .dictionary("initialStress", "a uniform deviatoric stress set at a fresh start inside a shape")
         .optional()
         .nested(&FpmSolver<Dim>::initialStressKeywords);
@@ -290,6 +296,21 @@ void FpmSolver<Dim>::initialiseFields() {
         for (std::size_t i = 0; i < n; ++i) (*S_)[i] = initialStressAt(x_[i]);
     if (prescribed_ && fresh)
         for (std::size_t i = 0; i < n; ++i) v_[i] = prescribedVelocity(x_[i]);
+    if (settings_.given("initialState")) {
+        const Dictionary& dict = settings_.dictionary("initialState");
+        if (prescribed_)
+            throw dict.error(
+                "type",
+                "velocity prescribed sets v itself: initialState is for `motion { velocity frozen; }`");
+        const auto state = InitialState<Dim>::New(dict);
+        if (state->hasDisplacement())
+            throw dict.error("type", "fpmSolid takes a velocity from initialState, not a displacement (" +
+                                         dict.get<std::string>("type") + " has one)");
+        if (fresh) {
+            const std::vector<Vector<Dim>> X = x_;
+            state->apply(*owner_, X);
+        }
+    }
 
     double largestVolume = 0;
     for (std::size_t i = 0; i < n; ++i) largestVolume = std::max(largestVolume, (*V_)[i]);

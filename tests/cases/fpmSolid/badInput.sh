@@ -35,6 +35,8 @@ refused unknownMotion "velocity rotating" "expected one of prescribed | frozen" 
     sed -i 's/velocity prescribed;/velocity rotating;/' constant/fpmProperties
 refused badOrder "^order" "expected a value" \
     sed -i 's/^order .*/order 3;/' constant/fpmProperties
+refused initialStateWithPrescribed "^initialState" "velocity prescribed sets v itself: initialState is for" \
+    sh -c 'echo "initialState { type rigidRotation; omega (0 0 -1); }" >> constant/fpmProperties'
 # The good input runs.
 good="$WORK/good"; cp -r "$base" "$good"; run "$good" fpmSolid
 [ -f "$good/0.01/rotationError" ] || fail "the good case wrote no 0.01/rotationError"

@@ -37,6 +37,26 @@ awk -v s="$stress" -v r="$radius" -v z="$zero" 'BEGIN { exit !(s <= 1e-9 && r <=
 read -r lo hi < <(fieldRange "$d" 12.5 deviatoricStress.xx)
 awk -v lo="$lo" -v hi="$hi" 'BEGIN { d = hi - 9.912028118634735; exit !(lo == 0 && d < 1e-9 && d > -1e-9) }' ||
     fail "2D: S11 range [$lo, $hi], expected [0, 9.912028118634735]"
+# Frozen particles (the thesis's coupled run: the rotation part moves nothing), v from the shared
+# initialState family (rigidRotation, the same v = (x2, -x1, 0)): every stressed particle turns its S
+# by the same exact map, so at 12.5 S11 = 10 cos 25 and S21 = -10 sin 25 on the stressed half, 0 on
+# the other; the positions do not move.
+f="$WORK/frozen"
+cp -r "$c" "$f"
+rm -rf "$f"/[1-9]* "$f/particles.pvd"
+sed -i 's/^startFrom .*/startFrom startTime;/' "$f/system/controlDict"
+sed -i 's/^motion .*/motion          { velocity frozen; }\ninitialState    { type rigidRotation; omega (0 0 -1); }/' "$f/constant/fpmProperties"
+grep -q "velocity frozen" "$f/constant/fpmProperties" || fail "could not freeze the particles"
+run "$f" fpmSolid
+read -r lo hi < <(fieldRange "$f" 12.5 deviatoricStress.xx)
+awk -v lo="$lo" -v hi="$hi" 'BEGIN { d = hi - 9.912028118634735; exit !(lo == 0 && d < 1e-9 && d > -1e-9) }' ||
+    fail "frozen: S11 range [$lo, $hi], expected [0, 9.912028118634735]"
+s11="$hi"
+read -r lo hi < <(fieldRange "$f" 12.5 deviatoricStress.xy)
+awk -v lo="$lo" -v hi="$hi" 'BEGIN { d = hi - 1.3235175009777302; exit !(lo == 0 && d < 1e-9 && d > -1e-9) }' ||
+    fail "frozen: S21 range [$lo, $hi], expected [0, 1.3235175009777302]"
+[ "$(fieldRange "$f" 12.5 position.x)" = "$(fieldRange "$f" 0 position.x)" ] || fail "frozen: the particles moved"
+echo "frozen: S11 max $s11 at 12.5 (exact 10 cos 25 = 9.912028118634735), positions unchanged"
 # A fit that cannot be made is a run error with the step, the time, the particle and the remedies:
 # the quadratic basis at h = 2 spacings has too few neighbours for its 10 terms at the surface.
 q="$WORK/order2"
@@ -50,4 +70,4 @@ grep -q "phase fit, step 1, t = [0-9.e-]*: LeastSquaresOperators: point [0-9]* a
     fail "order 2: no diagnosis with step, time, point and remedy: $(tail -3 "$q/log.fpmSolid")"
 grep -q nan "$q/log.fpmSolid" && fail "order 2: NaN in the log"
 echo "order 2 at h = 2 spacings: $(grep -o 'phase fit, step 1.\{0,120\}' "$q/log.fpmSolid")"
-echo "PASS: restart bit for bit; 2D disc to 12.5 s; a failing fit diagnosed"
+echo "PASS: restart bit for bit; 2D disc and frozen particles to 12.5 s; a failing fit diagnosed"
