@@ -28,6 +28,10 @@
 // system/controlDict: a fixed deltaT (adjustTimeStep no; the thesis's 0.001), or adjustTimeStep yes
 // with maxCo: dt = maxCo x spacing / max |v| (prescribed motion).
 //
+// constant/materialProperties (optional): materials { name { equationOfState { ... } strength { ... } } }
+// through the shared MaterialSet (both models optional; a constitutiveLaw is refused), the
+// particles' `material` assigned; read for the parts to come, the rotation part uses none.
+//
 // Fields: position x, velocity v, density rho (particleGen's, constant in the rotation part),
 // pressure p (0 unless given), deviatoricStress S (symmetric), volume V (m / rho at a fresh start),
 // globalId. With prescribed motion and the rotation part alone, the exact answer is known for any
@@ -42,6 +46,7 @@
 #include "core/Parallel.hpp"
 #include "fpm/RotationPart.hpp"
 #include "solver/InitialState.hpp"
+#include "solver/MaterialAssignment.hpp"
 #include "solver/SolverRegistry.hpp"
 #include "solver/SolverRun.hpp"
 
@@ -210,7 +215,25 @@ FpmSolver<Dim>::FpmSolver(SolverRun& run)
         if (dict.isDict("shape")) stressShape_ = Shape::New(dict.subDict("shape"), Dim);
         hasInitialStress_ = true;
     }
+    readMaterials();
     initialiseFields();
+}
+
+// constant/materialProperties, when the case has one, through the shared MaterialSet: per material
+// an equation of state and a strength law (its shear modulus), both optional, for the Euler and shear
+// parts to come (the rotation part reads none); each particle's material assigned and logged.
+template <int Dim>
+void FpmSolver<Dim>::readMaterials() {
+    const Dictionary* dict = openOptionalConstant("materialProperties");
+    if (!dict) return;
+    MaterialModels models;
+    models.method = "fpmSolid";
+    models.equationOfState = ModelUse::optional;
+    models.strength = ModelUse::optional;
+    materials_ = std::make_unique<MaterialSet<Dim>>(*dict, models);
+    assignMaterials(*owner_, materials_->names(), *dict);
+    Log::info("fpmSolid: " + std::to_string(materials_->size()) +
+              " material(s) read; the rotation part uses none of their models");
 }
 
 template <int Dim>

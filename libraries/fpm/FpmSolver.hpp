@@ -3,6 +3,7 @@
 // What is built, the step, constant/fpmProperties and the fields: the opening comment of FpmSolver.cpp.
 #include "core/KeywordSchema.hpp"
 #include "geometry/Shape.hpp"
+#include "materials/MaterialSet.hpp"
 #include "meshfreeOperators/LeastSquaresOperators.hpp"
 #include "meshfreeOperators/fitWeights/FitWeight.hpp"
 #include "particles/NeighbourSearch.hpp"
@@ -42,6 +43,7 @@ private:
     static KeywordValues readSettings(const Dictionary& properties);
     void readSubsystems();
     void readMotion();
+    void readMaterials();
     void initialiseFields();
     SymmTensor<Dim> initialStressAt(const Vector<Dim>& X) const;
     Vector<Dim> prescribedVelocity(const Vector<Dim>& x) const;
@@ -51,6 +53,7 @@ private:
     const Dictionary& properties_;
     const KeywordValues settings_;
     std::unique_ptr<FitWeight> fitWeight_;
+    std::unique_ptr<MaterialSet<Dim>> materials_;  // null without constant/materialProperties
     std::unique_ptr<Shape> stressShape_;
     SymmTensor<Dim> stress0_{};
     bool hasInitialStress_ = false;

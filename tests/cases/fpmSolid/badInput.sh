@@ -37,7 +37,23 @@ refused badOrder "^order" "expected a value" \
     sed -i 's/^order .*/order 3;/' constant/fpmProperties
 refused initialStateWithPrescribed "^initialState" "velocity prescribed sets v itself: initialState is for" \
     sh -c 'echo "initialState { type rigidRotation; omega (0 0 -1); }" >> constant/fpmProperties'
-# The good input runs.
+# constant/materialProperties (optional) through the shared MaterialSet: a constitutive law is not
+# fpmSolid's model (an equation of state and a strength law are).
+m="$WORK/constitutiveLaw"
+cp -r "$base" "$m"
+printf 'materials\n{\n    body\n    {\n        constitutiveLaw { type linearElastic; youngsModulus 1; poissonRatio 0.3; }\n    }\n}\n' > "$m/constant/materialProperties"
+rc=0; fpmSolid -case "$m" > "$m/log.fpmSolid" 2>&1 || rc=$?
+[ "$rc" = 1 ] || fail "constitutiveLaw: exit status $rc, expected 1"
+grep -q "constant/materialProperties:5:.*fpmSolid takes no constitutiveLaw; it takes optionally equationOfState, strength" "$m/log.fpmSolid" ||
+    fail "constitutiveLaw: $(tail -2 "$m/log.fpmSolid")"
+ls -d "$m"/[1-9]* "$m"/0.* > /dev/null 2>&1 && fail "constitutiveLaw: a time directory was written"
+echo "constitutiveLaw: refused at constant/materialProperties:5"
+# The good input runs, with and without a materialProperties.
+mg="$WORK/materials"
+cp -r "$base" "$mg"
+printf 'materials\n{\n    body\n    {\n        equationOfState { type idealGas; gamma 1.4; }\n        strength { type hookean; shearModulus 50; }\n    }\n}\n' > "$mg/constant/materialProperties"
+run "$mg" fpmSolid
+grep -q "Material body: equationOfState idealGas, strength hookean" "$mg/log.fpmSolid" || fail "materials: not logged"
 good="$WORK/good"; cp -r "$base" "$good"; run "$good" fpmSolid
 [ -f "$good/0.01/rotationError" ] || fail "the good case wrote no 0.01/rotationError"
 echo "PASS: bad fpmProperties refused at their lines"
