@@ -57,6 +57,20 @@ awk -v lo="$lo" -v hi="$hi" 'BEGIN { d = hi - 1.3235175009777302; exit !(lo == 0
     fail "frozen: S21 range [$lo, $hi], expected [0, 1.3235175009777302]"
 [ "$(fieldRange "$f" 12.5 position.x)" = "$(fieldRange "$f" 0 position.x)" ] || fail "frozen: the particles moved"
 echo "frozen: S11 max $s11 at 12.5 (exact 10 cos 25 = 9.912028118634735), positions unchanged"
+# The CFL rule (adjustTimeStep yes, maxCo 0.1): dt = maxCo spacing / max |v| = 0.1 x 1.25 / max |x|,
+# and the exact map keeps R4 at any step (an angle of 0.026 rad a step here).
+a="$WORK/adjustable"
+cp -r "$c" "$a"
+rm -rf "$a"/[1-9]* "$a/particles.pvd"
+sed -i 's/^startFrom .*/startFrom startTime;/; s/^adjustTimeStep .*/adjustTimeStep  yes;\nmaxCo           0.1;/' "$a/system/controlDict"
+run "$a" fpmSolid
+read -r vlo vhi < <(fieldRange "$a" 12.5 "|velocity|")
+dt=$(awk '/^Step .* t = 12.5 / { for (i = 1; i <= NF; ++i) if ($i == "dt") print $(i + 2) }' "$a/log.fpmSolid")
+awk -v dt="$dt" -v v="$vhi" 'BEGIN { e = 0.1 * 1.25 / v; exit !(dt > 0.999 * e && dt < 1.001 * e) }' ||
+    fail "adjustTimeStep: dt $dt, expected 0.1 x 1.25 / $vhi"
+stress=$(entry "$a/12.5/rotationError" runMaxStressError)
+awk -v s="$stress" 'BEGIN { exit !(s <= 1e-9) }' || fail "adjustTimeStep: max |S - S_exact| = $stress > 1e-9"
+echo "adjustTimeStep: dt $dt = 0.1 x 1.25 / $vhi, max |S - S_exact| $stress"
 # A fit that cannot be made is a run error with the step, the time, the particle and the remedies:
 # the quadratic basis at h = 2 spacings has too few neighbours for its 10 terms at the surface.
 q="$WORK/order2"
@@ -70,4 +84,4 @@ grep -q "phase fit, step 1, t = [0-9.e-]*: LeastSquaresOperators: point [0-9]* a
     fail "order 2: no diagnosis with step, time, point and remedy: $(tail -3 "$q/log.fpmSolid")"
 grep -q nan "$q/log.fpmSolid" && fail "order 2: NaN in the log"
 echo "order 2 at h = 2 spacings: $(grep -o 'phase fit, step 1.\{0,120\}' "$q/log.fpmSolid")"
-echo "PASS: restart bit for bit; 2D disc and frozen particles to 12.5 s; a failing fit diagnosed"
+echo "PASS: restart bit for bit; 2D disc, frozen particles and the CFL step to 12.5 s; a failing fit diagnosed"
