@@ -2,17 +2,24 @@
 // the method as engineered is doc/methods/fpm.md). Particles are the nodes of a moving
 // least-squares fit in the current configuration (meshfreeOperators/LeastSquaresOperators, fit
 // weights by name); the system is split into a volumetric (Euler), a deviatoric (shear) and a
-// rotation part (§3.1). This first slice builds the rotation part (§3.4) with prescribed or
-// frozen particle motion, which is what the rotation-only test (§4.9, R4 of §4b) needs; the Euler
-// and shear parts are refused at their entry until they are built. A step:
+// rotation part (§3.1). Built: the rotation part (§3.4) with prescribed or frozen particle motion
+// (the rotation-only test, §4.9, R4 of §4b) and the Euler part (§3.2, fpm/EulerPart.hpp: the
+// pressure-gradient upwinding) on frozen particles (the Euler validation, §4.4, R6); the shear part
+// is refused at its entry until it is built. A step:
 //
-//     neighbours (cell list, radius h, self included) -> fit (weights once per particle, applied
-//     to the 3 components of v) -> rotation (W = skew grad v, S <- exp(dt W) S exp(dt W)^T)
+//     neighbours (cell list, radius h, self included; (1 + maxShift) h for the Euler part's shifted
+//     fits when a particle is shifted) -> fit (weights
+//     once per particle, applied to the components of v and to p) -> euler (n = grad p / |grad p|,
+//     c^2 from the particle's equationOfState at (rho, e), the fits at x -+ l n, rho, v, p, e
+//     updated by forward Euler) -> rotation (on the Euler part's v: grad v refitted) (W = skew grad v, S <- exp(dt W) S exp(dt W)^T)
 //     -> volume (V <- V (1 + dt div v), the note's §4b remark) -> motion (prescribed: the exact
 //     rigid rotation of x, v = omega a x (x - c); frozen: none)
 //
 // constant/fpmProperties:
-//     subsystems (rotation);            // euler | shear | rotation (only rotation is built)
+//     subsystems (euler rotation);      // euler | shear | rotation (shear is not built); the order
+//                                       // is the thesis's (euler before rotation) whatever is written
+//     euler      { delta 0.3; maxShift 0.5; }  // the shift l = delta c (delta in s), or
+//                                       // { deltaFraction 0.2; }: l = 0.2 h; l <= maxShift h
 //     fitWeight  { type truncatedGaussian; alpha 6.25; squared yes; }   // family fitWeight
 //     order      1;                     // the basis: 1 (the thesis) or 2
 //     derivatives full;                 // full (the thesis's 3.11) | diffuse
@@ -30,10 +37,14 @@
 //
 // constant/materialProperties (optional): materials { name { equationOfState { ... } strength { ... } } }
 // through the shared MaterialSet (both models optional; a constitutiveLaw is refused), the
-// particles' `material` assigned; read for the parts to come, the rotation part uses none.
+// particles' `material` assigned. The Euler part needs it, and an equationOfState for every
+// material: c^2 = soundSpeedSquared(rho, e) (the EOS gives the coefficient; p itself is evolved by its
+// rate equation, §1, and read from the particles at a fresh start), e = specificInternalEnergy
+// evolved by de/dt = -p div v / rho when the EOS needs it. c^2 <= 0 (the bracket rho c^2 of the
+// Euler part's Dp/Dt) is a RunError naming the particle. The rotation part uses no material.
 //
 // Fields: position x, velocity v, density rho (particleGen's, constant in the rotation part),
-// pressure p (0 unless given), deviatoricStress S (symmetric), volume V (m / rho at a fresh start),
+// pressure p (0 unless given), specificInternalEnergy e (euler, an EOS that needs it), deviatoricStress S (symmetric), volume V (m / rho at a fresh start),
 // globalId. With prescribed motion and the rotation part alone, the exact answer is known for any
 // initial stress, S_exact(x, t) = Q(t) S0(Q(t)^T x) Q(t)^T with Q(t) the rotation by omega t (§4.9's
 // S11 = 10 cos 2t, S21 = -10 sin 2t for S0 = diag(10, -10, 0), omega 1, axis -z): every step
@@ -113,6 +124,22 @@ KeywordSchema FpmSolver<Dim>::motionKeywords() {
 }
 
 template <int Dim>
+KeywordSchema FpmSolver<Dim>::eulerKeywords() {
+    return KeywordSchema("solver", "fpmSolid/euler")
+        .scalar("delta", "s", "the upwind offset as a time: the shift length l = delta c (the thesis's 0.3)")
+        .greaterThan(0)
+        .optional()
+        .scalar("deltaFraction", "-",
+                "the shift length as a fraction of h, l = deltaFraction h (not with delta)")
+        .greaterThan(0)
+        .optional()
+        .scalar("maxShift", "-", "the clamp l <= maxShift h (the note's 0.5)")
+        .greaterThan(0)
+        .atMost(1)
+        .orDefault(0.5);
+}
+
+template <int Dim>
 KeywordSchema FpmSolver<Dim>::initialStressKeywords() {
     return KeywordSchema("solver", "fpmSolid/initialStress")
         .vector("S", "Pa", "the deviatoric stress (xx yy zz xy yz xz) set at a fresh start")
@@ -126,8 +153,8 @@ template <int Dim>
 KeywordSchema FpmSolver<Dim>::keywords() {
     return KeywordSchema("solver", "fpmSolid")
         .words("subsystems",
-               "the parts of the split that run (doc/methods/fpm.md §3.1): euler | shear | rotation; only "
-               "rotation is built so far")
+               "the parts of the split that run (doc/methods/fpm.md §3.1): euler | shear | rotation; euler "
+               "and rotation are built (euler on frozen particles)")
         .dictionary("fitWeight", "the least-squares fit's weight W(|x - y| / h) (a fitWeight type)")
         .integer("order", "-", "the fit's basis: 1 (linear, the thesis) or 2 (quadratic, the note's remedy)")
         .atLeast(1)
@@ -153,6 +180,9 @@ KeywordSchema FpmSolver<Dim>::keywords() {
         .scalar("spacing", "m", "the particle spacing (default: the largest V^(1/d))")
         .greaterThan(0)
         .optional()
+        .dictionary("euler", "the Euler part's upwinding: delta (a time) or deltaFraction (of h), maxShift")
+        .optional()
+        .nested(&FpmSolver<Dim>::eulerKeywords)
         .dictionary("motion", "the particle motion: a prescribed rigid rotation, or frozen")
         .nested(&FpmSolver<Dim>::motionKeywords)
         .dictionary("initialState",
@@ -194,10 +224,11 @@ FpmSolver<Dim>::FpmSolver(SolverRun& run)
       fit_(fitOptions<Dim>(settings_)) {
     if constexpr (Dim == 1)
         throw InputError("fpmSolid: the method is 2D or 3D (the thesis's is 3D); this case is 1D");
-    declarePhases({"neighbours", "fit", "rotation", "volume", "motion"});
+    declarePhases({"neighbours", "fit", "euler", "rotation", "volume", "motion"});
     readSubsystems();
     fitWeight_ = FitWeight::New(settings_.dictionary("fitWeight"));
     readMotion();
+    readEuler();
     if (settings_.given("initialStress")) {
         const Dictionary& dict = settings_.dictionary("initialStress");
         const std::vector<double>& s = settings_.nested("initialStress").vector("S");
@@ -225,6 +256,10 @@ FpmSolver<Dim>::FpmSolver(SolverRun& run)
 template <int Dim>
 void FpmSolver<Dim>::readMaterials() {
     const Dictionary* dict = openOptionalConstant("materialProperties");
+    if (!dict && euler_)
+        throw properties_.error("subsystems",
+                                "the Euler part needs constant/materialProperties with an equationOfState "
+                                "(c^2 of its pressure equation)");
     if (!dict) return;
     MaterialModels models;
     models.method = "fpmSolid";
@@ -232,8 +267,48 @@ void FpmSolver<Dim>::readMaterials() {
     models.strength = ModelUse::optional;
     materials_ = std::make_unique<MaterialSet<Dim>>(*dict, models);
     assignMaterials(*owner_, materials_->names(), *dict);
-    Log::info("fpmSolid: " + std::to_string(materials_->size()) +
-              " material(s) read; the rotation part uses none of their models");
+    if (euler_) {
+        const std::vector<std::int64_t>& material = owner_->integerField("material");
+        for (std::size_t i = 0; i < material.size(); ++i)
+            if (!(*materials_)[std::size_t(material[i])].eos)
+                throw dict->error("materials", "the Euler part needs an equationOfState in material '" +
+                                                   materials_->names()[std::size_t(material[i])] +
+                                                   "' (particle " + std::to_string(owner_->globalId()[i]) +
+                                                   " is made of it)");
+        if (materials_->needsEnergy()) e_ = &owner_->scalarField("specificInternalEnergy");
+    }
+    Log::info("fpmSolid: " + std::to_string(materials_->size()) + " material(s) read; " +
+              (euler_ ? "the Euler part takes c^2 from their equationOfState"
+                      : "the rotation part uses none of their models"));
+}
+
+template <int Dim>
+void FpmSolver<Dim>::readEuler() {
+    if (!euler_) {
+        if (settings_.given("euler"))
+            throw properties_.error("euler", "euler { ... } is for subsystems with euler");
+        return;
+    }
+    if (prescribed_)
+        throw settings_.dictionary("motion").error(
+            "velocity",
+            "the Euler part evolves v: it runs on frozen particles (motion { velocity frozen; }); "
+            "the Lagrangian motion with the upwind velocity is not built yet");
+    fpm::UpwindOptions upwind;
+    if (settings_.given("euler")) {
+        const KeywordValues& e = settings_.nested("euler");
+        const Dictionary& dict = settings_.dictionary("euler");
+        if (e.given("delta") && e.given("deltaFraction"))
+            throw dict.error("deltaFraction", "give delta (a time) or deltaFraction (of h), not both");
+        if (e.given("deltaFraction")) {
+            upwind.deltaIsTime = false;
+            upwind.delta = e.scalar("deltaFraction");
+        } else if (e.given("delta")) {
+            upwind.delta = e.scalar("delta");
+        }
+        upwind.maxShift = e.scalar("maxShift");
+    }
+    eulerPart_ = std::make_unique<fpm::EulerPart<Dim>>(fitOptions<Dim>(settings_), upwind);
 }
 
 template <int Dim>
@@ -249,14 +324,16 @@ void FpmSolver<Dim>::readSubsystems() {
                 "subsystems", "unknown subsystem '" + name + "'; valid choices: " + joined(subsystemNames) +
                                   (guess.empty() ? "" : "; did you mean '" + guess + "'?"));
         }
-        if (name != "rotation")
+        if (name == "shear")
             throw properties_.error("subsystems",
-                                    "the " + name +
-                                        " part is not built yet (issue 19: only the rotation part, "
-                                        "doc/methods/fpm.md §3.4, is built); use subsystems (rotation);");
+                                    "the shear part is not built yet (issue 19: the rotation part, "
+                                    "doc/methods/fpm.md §3.4, and the Euler part, §3.2, are built); use "
+                                    "subsystems (euler rotation); or a part of it");
+        if (name == "euler") euler_ = true;
+        if (name == "rotation") rotation_ = true;
     }
-    if (std::find(names.begin(), names.end(), "rotation") == names.end())
-        throw properties_.error("subsystems", "no subsystem to run: subsystems (rotation); is the one built");
+    if (!euler_ && !rotation_)
+        throw properties_.error("subsystems", "no subsystem to run: euler | rotation are built");
 }
 
 template <int Dim>
@@ -348,7 +425,12 @@ void FpmSolver<Dim>::initialiseFields() {
         h_ = settings_.scalar("smoothingLengthRatio") * spacing_;
     }
     // The reference holds for the rotation part alone with a prescribed rigid rotation from t = 0.
-    reference_ = prescribed_;
+    reference_ = prescribed_ && rotation_;
+    if (euler_) {  // this run's start, for the state-change measure
+        rhoStart_ = rho_;
+        pStart_ = *p_;
+        vStart_ = v_;
+    }
     radius0_.resize(n);
     for (std::size_t i = 0; i < n; ++i) radius0_[i] = (x_[i] - centre_).norm();  // at this run's start
 
@@ -356,7 +438,12 @@ void FpmSolver<Dim>::initialiseFields() {
     log << "fpmSolid: " << n << " particles, spacing " << spacing_ << ", h " << h_ << " (" << h_ / spacing_
         << " spacings), fit order " << settings_.integer("order") << " (" << settings_.word("derivatives")
         << " derivatives), fitWeight " << fitWeight_->type() << (fitWeight_->squared() ? " squared" : "")
-        << "; subsystems: rotation (exact exp map); motion: "
+        << "; subsystems:" << (euler_ ? " euler (grad p upwinding, l = " : "")
+        << (euler_ ? formatKeywordNumber(eulerPart_->options().delta) +
+                         (eulerPart_->options().deltaIsTime ? " c" : " h") +
+                         " <= " + formatKeywordNumber(eulerPart_->options().maxShift) + " h)"
+                   : std::string())
+        << (rotation_ ? " rotation (exact exp map)" : "") << "; motion: "
         << (prescribed_ ? "prescribed rigid rotation, omega " + formatKeywordNumber(omega_)
                         : std::string("frozen"));
     Log::info(log.str());
@@ -405,7 +492,11 @@ void FpmSolver<Dim>::step(double dt) {
         grown_ += fit_.fallbackCounts().grown;
         shepard_ += fit_.fallbackCounts().shepard;
     }
-    {
+    if (euler_) {
+        eulerStep(dt);
+        if (rotation_) gradV_ = fit_.gradientOf(v_);  // the rotation part on the Euler part's results
+    }
+    if (rotation_) {
         auto timed = phase("rotation");
         std::vector<SymmTensor<Dim>>& S = *S_;
         parallelFor(
@@ -431,14 +522,72 @@ void FpmSolver<Dim>::step(double dt) {
             const auto& s = (*S_)[i];
             for (double c : s.c)
                 if (!std::isfinite(c)) return true;
-            return !x_[i].allFinite() || !std::isfinite((*V_)[i]);
+            return !x_[i].allFinite() || !std::isfinite((*V_)[i]) || !v_[i].allFinite() ||
+                   !std::isfinite(rho_[i]) || !std::isfinite((*p_)[i]);
         },
         [&](std::size_t i, double count) {
             return "particle " + std::to_string(owner_->globalId()[i]) +
-                   " has a stress, position or volume that is not finite; " + std::to_string(long(count)) +
-                   " particles affected";
+                   " has a stress, position, volume, velocity, density or pressure that is not finite; " +
+                   std::to_string(long(count)) + " particles affected";
         });
     if (reference_) measureRotationError(time().value() + dt);
+    if (euler_) {
+        StateChange c;
+        c.rho = GlobalReduce::max(n, [&](std::size_t i) { return std::abs(rho_[i] - rhoStart_[i]); });
+        c.p = GlobalReduce::max(n, [&](std::size_t i) { return std::abs((*p_)[i] - pStart_[i]); });
+        c.v = GlobalReduce::max(n, [&](std::size_t i) { return (v_[i] - vStart_[i]).norm(); });
+        lastChange_ = c;
+        worstChange_.rho = std::max(worstChange_.rho, c.rho);
+        worstChange_.p = std::max(worstChange_.p, c.p);
+        worstChange_.v = std::max(worstChange_.v, c.v);
+    }
+}
+
+// The Euler part (fpm/EulerPart.hpp) on the fit of this step: c from each particle's equation of
+// state at (rho, e), checked (rho c^2 > 0, the bracket of Dp/Dt in the Euler part), the upwinded
+// div v and grad p, then rho, v, p (and e) advanced together.
+template <int Dim>
+void FpmSolver<Dim>::eulerStep(double dt) {
+    auto timed = phase("euler");
+    const std::size_t n = x_.size();
+    const std::vector<std::int64_t>& material = owner_->integerField("material");
+    c_.resize(n);
+    std::vector<double> c2(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        c2[i] = (*materials_)[std::size_t(material[i])].eos->soundSpeedSquared(rho_[i], e_ ? (*e_)[i] : 0.0);
+        c_[i] = std::sqrt(std::max(c2[i], 0.0));
+    }
+    checkState(
+        "euler", n, [&](std::size_t i) { return !(c2[i] > 0) || !(rho_[i] > 0); },
+        [&](std::size_t i, double count) {
+            const std::string name = materials_->names()[std::size_t(material[i])];
+            return "particle " + std::to_string(owner_->globalId()[i]) + " (material " + name +
+                   "): the bracket rho c^2 of the Euler part's pressure equation is not positive (rho " +
+                   formatKeywordNumber(rho_[i]) + ", c^2 " + formatKeywordNumber(c2[i]) + " from its " +
+                   "equationOfState at e " + formatKeywordNumber(e_ ? (*e_)[i] : 0.0) + "); " +
+                   std::to_string(long(count)) +
+                   " particles affected. Remedy: an equationOfState with c^2 > 0 in this state (rho0, "
+                   "the initial e), or a smaller deltaT if the state ran away";
+        });
+    const std::vector<Vector<Dim>> gradP = fit_.gradientOf(*p_);
+    // The shifted points' neighbours within h lie within (1 + maxShift) h of the particle: those
+    // rows are searched only when some particle is shifted (a uniform p shifts none).
+    bool anyShift = false;
+    for (std::size_t i = 0; i < n && !anyShift; ++i)
+        anyShift = eulerPart_->shifts(gradP[i].norm(), (*p_)[i], h_);
+    anyShift = GlobalReduce::max(std::size_t(1), [&](std::size_t) { return anyShift ? 1.0 : 0.0; }) > 0;
+    const double central = fit_.options().fallback == LeastSquaresOperators<Dim>::Fallback::growSupport
+                               ? fit_.options().maxSupportGrowth
+                               : 1.0;  // the reach of rows_, in h
+    const bool wider = anyShift && 1.0 + eulerPart_->options().maxShift > central;
+    if (wider) wideRows_ = search_.build(x_, (1.0 + eulerPart_->options().maxShift) * h_);
+    const NeighbourList& rows = wider ? wideRows_ : rows_;
+    eulerPart_->upwind(x_, rows, h_, *fitWeight_, rho_, *p_, v_, c_, gradP, gradV_);
+    eulerPart_->advance(dt, rho_, v_, *p_, e_, c_);
+    const auto& r = eulerPart_->result();
+    flat_ += r.flat;
+    tooFew_ += r.tooFew;
+    for (double l : r.shift) maxShift_ = std::max(maxShift_, l);
 }
 
 // After the step, at t + dt: the exact stress of the particle now at x is Q(t + dt) S0(X) Q^T with
@@ -477,7 +626,19 @@ void FpmSolver<Dim>::measureRotationError(double t) {
 
 template <int Dim>
 std::vector<ExtraFile> FpmSolver<Dim>::extraOutput() const {
-    if (!reference_) return {};
+    std::vector<ExtraFile> files;
+    if (euler_) {
+        char text[512];
+        std::snprintf(text, sizeof text,
+                      "// the change from this run's start (the frozen Euler validation, doc/methods/fpm.md "
+                      "§4.4: 0): this time, and the largest over the run\n"
+                      "maxDensityChange %.6e;\nmaxPressureChange %.6e;\nmaxVelocityChange %.6e;\n"
+                      "runMaxDensityChange %.6e;\nrunMaxPressureChange %.6e;\nrunMaxVelocityChange %.6e;\n",
+                      lastChange_.rho, lastChange_.p, lastChange_.v, worstChange_.rho, worstChange_.p,
+                      worstChange_.v);
+        files.push_back({"stateChange", text});
+    }
+    if (!reference_) return files;
     char text[512];
     std::snprintf(
         text, sizeof text,
@@ -485,7 +646,8 @@ std::vector<ExtraFile> FpmSolver<Dim>::extraOutput() const {
         "maxStressError %.6e;\nmaxRadiusChange %.6e;\nmaxZeroStress %.6e;\n"
         "runMaxStressError %.6e;\nrunMaxRadiusChange %.6e;\nrunMaxZeroStress %.6e;\n",
         last_.stress, last_.radius, last_.zeroStress, worst_.stress, worst_.radius, worst_.zeroStress);
-    return {{"rotationError", text}};
+    files.push_back({"rotationError", text});
+    return files;
 }
 
 template <int Dim>
@@ -498,6 +660,19 @@ std::vector<std::string> FpmSolver<Dim>::summary(double) const {
         "Shepard fits (particle-steps)",
         neighboursPerParticle_, grown_, shepard_);
     lines.push_back(line);
+    if (euler_) {
+        std::snprintf(line, sizeof line,
+                      "euler                central evaluations (particle-steps): %zu with |grad p| ~ 0, %zu "
+                      "with a shifted fit short of neighbours; largest shift %.4g (h %.4g)",
+                      flat_, tooFew_, maxShift_, h_);
+        lines.push_back(line);
+        std::snprintf(
+            line, sizeof line,
+            "state change         max |rho - rho_0| %.3e, max |p - p_0| %.3e, max |v - v_0| %.3e (over "
+            "the run, from its start)",
+            worstChange_.rho, worstChange_.p, worstChange_.v);
+        lines.push_back(line);
+    }
     if (reference_) {
         std::snprintf(
             line, sizeof line,
@@ -513,7 +688,8 @@ template class FpmSolver<1>;
 template class FpmSolver<2>;
 template class FpmSolver<3>;
 
-MFDYN_REGISTER_SOLVER(FpmSolver, "fpmSolid",
-                      "Finite pointset method for hypo-elastic solids (von Nida 2005): the rotation part");
+MFDYN_REGISTER_SOLVER(
+    FpmSolver, "fpmSolid",
+    "Finite pointset method for hypo-elastic solids (von Nida 2005): the Euler and rotation parts");
 
 }  // namespace mfdyn

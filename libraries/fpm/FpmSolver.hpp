@@ -2,6 +2,7 @@
 // fpmSolid: the finite pointset method for hypo-elastic solids (von Nida 2005; doc/methods/fpm.md).
 // What is built, the step, constant/fpmProperties and the fields: the opening comment of FpmSolver.cpp.
 #include "core/KeywordSchema.hpp"
+#include "fpm/EulerPart.hpp"
 #include "geometry/Shape.hpp"
 #include "materials/MaterialSet.hpp"
 #include "meshfreeOperators/LeastSquaresOperators.hpp"
@@ -24,6 +25,7 @@ public:
     static KeywordSchema keywords();
     static KeywordSchema motionKeywords();
     static KeywordSchema initialStressKeywords();
+    static KeywordSchema eulerKeywords();
     static constexpr const char* propertiesDictionary = "fpmProperties";
 
     TimeStepVote stableTimeStep() override;
@@ -48,6 +50,8 @@ private:
     SymmTensor<Dim> initialStressAt(const Vector<Dim>& X) const;
     Vector<Dim> prescribedVelocity(const Vector<Dim>& x) const;
     void measureRotationError(double t);
+    void readEuler();
+    void eulerStep(double dt);
 
     std::unique_ptr<ParticleSet<Dim>> owner_;
     const Dictionary& properties_;
@@ -65,7 +69,22 @@ private:
 
     double spacing_ = 0;
     double h_ = 0;
-    bool reference_ = false;  // the rotation-only reference applies
+    bool reference_ = false;                 // the rotation-only reference applies
+    bool euler_ = false, rotation_ = false;  // the subsystems that run
+
+    // The Euler part (fpm/EulerPart.hpp): null unless subsystems has euler.
+    std::unique_ptr<fpm::EulerPart<Dim>> eulerPart_;
+    std::vector<double>* e_ = nullptr;   // specificInternalEnergy, when an equation of state needs it
+    std::vector<double> c_;              // the sound speed of the step's start
+    std::size_t flat_ = 0, tooFew_ = 0;  // central evaluations of the Euler part, summed over the steps
+    double maxShift_ = 0;                // the largest shift length taken
+    struct StateChange {
+        double rho = 0, p = 0,
+               v = 0;  // max over particles of |rho - rho_start|, |p - p_start|, |v - v_start|
+    };
+    std::vector<double> rhoStart_, pStart_;
+    std::vector<Vector<Dim>> vStart_;
+    StateChange lastChange_, worstChange_;
 
     std::vector<Vector<Dim>>& x_;
     std::vector<Vector<Dim>>& v_;
@@ -76,6 +95,7 @@ private:
 
     NeighbourSearch<Dim> search_;
     NeighbourList rows_;
+    NeighbourList wideRows_;  // the Euler part's shifted fits: within (1 + maxShift) h
     LeastSquaresOperators<Dim> fit_;
     std::vector<double> hField_;
     std::vector<Tensor<Dim>> gradV_;

@@ -1,5 +1,6 @@
-# Bad fpmProperties from a case directory: an unknown keyword, an unknown subsystem and a
-# subsystem not built yet are each an input error at their line (file:line, the valid choices),
+# Bad fpmProperties from a case directory: an unknown keyword, an unknown subsystem, a subsystem
+# not built yet (shear) and the Euler part's conditions (frozen particles, an equation of state, one
+# delta) are each an input error at their line (file:line, the valid choices),
 # exit status 1, the particles untouched and no time directory written.
 source "$(dirname "$0")/common.sh"
 base="$WORK/base"
@@ -27,8 +28,12 @@ refused unknownKeyword "^derivates" "unknown keyword 'derivates'.*valid keywords
     sed -i 's/^derivatives /derivates /' constant/fpmProperties
 refused unknownSubsystem "^subsystems" "unknown subsystem 'rotaton'; valid choices: euler | shear | rotation; did you mean 'rotation'" \
     sed -i 's/^subsystems .*/subsystems (rotaton);/' constant/fpmProperties
-refused eulerNotBuilt "^subsystems" "the euler part is not built yet" \
+refused eulerPrescribed "^motion" "the Euler part evolves v: it runs on frozen particles" \
     sed -i 's/^subsystems .*/subsystems (euler rotation);/' constant/fpmProperties
+refused eulerNoMaterials "^subsystems" "the Euler part needs constant/materialProperties with an equationOfState" \
+    sed -i 's/^subsystems .*/subsystems (euler rotation);/; s/^motion .*/motion { velocity frozen; }/' constant/fpmProperties
+refused eulerBothDeltas "^euler" "give delta (a time) or deltaFraction (of h), not both" \
+    sh -c "sed -i 's/^subsystems .*/subsystems (euler);/; s/^motion .*/motion { velocity frozen; }/' constant/fpmProperties && echo 'euler { delta 0.3; deltaFraction 0.2; }' >> constant/fpmProperties"
 refused shearNotBuilt "^subsystems" "the shear part is not built yet" \
     sed -i 's/^subsystems .*/subsystems (shear rotation);/' constant/fpmProperties
 refused unknownMotion "velocity rotating" "expected one of prescribed | frozen" \

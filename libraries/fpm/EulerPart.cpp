@@ -1,0 +1,137 @@
+// The Euler part's pressure-gradient upwinding: see EulerPart.hpp.
+#include "fpm/EulerPart.hpp"
+
+#include "core/Parallel.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mfdyn::fpm {
+
+namespace {
+
+template <int Dim>
+typename LeastSquaresOperators<Dim>::Options shiftedOptions(typename LeastSquaresOperators<Dim>::Options o) {
+    o.form = LeastSquaresOperators<Dim>::Form::value;  // the fit evaluated away from the particle
+    o.fallback = LeastSquaresOperators<Dim>::Fallback::none;
+    o.onFailure = LeastSquaresOperators<Dim>::OnFailure::flag;  // a failed shifted fit: central
+    return o;
+}
+
+}  // namespace
+
+template <int Dim>
+EulerPart<Dim>::EulerPart(typename LeastSquaresOperators<Dim>::Options fit, UpwindOptions upwind)
+    : upwind_(upwind), shifted_(shiftedOptions<Dim>(fit)) {}
+
+template <int Dim>
+void EulerPart<Dim>::upwind(const std::vector<Vector<Dim>>& x, const NeighbourList& rows, double h,
+                            const FitWeight& weight, const std::vector<double>& rho,
+                            const std::vector<double>& p, const std::vector<Vector<Dim>>& v,
+                            const std::vector<double>& c, const std::vector<Vector<Dim>>& gradP,
+                            const std::vector<Tensor<Dim>>& gradV) {
+    const std::size_t n = x.size();
+    EulerUpwind<Dim>& r = result_;
+    r.divV.assign(n, 0.0);
+    r.gradP.assign(n, Vector<Dim>::Zero());
+    r.vCorrect.assign(n, Vector<Dim>::Zero());
+    r.pCorrect.assign(n, 0.0);
+    r.shift.assign(n, 0.0);
+    r.flat = r.tooFew = 0;
+
+    // n_i and the shift; the shifted points y+ = x - l n (first n points) and y- = x + l n.
+    std::vector<Vector<Dim>> dir(n, Vector<Dim>::Zero());
+    std::vector<char> flat(n, 0);
+    std::vector<Vector<Dim>> points(2 * n);
+    for (std::size_t i = 0; i < n; ++i) {
+        const double g = gradP[i].norm();
+        if (!shifts(g, p[i], h)) {
+            flat[i] = 1;
+            points[i] = points[n + i] = x[i];
+            continue;
+        }
+        dir[i] = gradP[i] / g;
+        const double l =
+            std::min(upwind_.deltaIsTime ? upwind_.delta * c[i] : upwind_.delta * h, upwind_.maxShift * h);
+        r.shift[i] = l;
+        points[i] = x[i] - l * dir[i];
+        points[n + i] = x[i] + l * dir[i];
+    }
+    // rows of the 2n points: particle i's row for both of its points (no shifted fit at all when
+    // every particle is central)
+    if (std::all_of(flat.begin(), flat.end(), [](char f) { return f != 0; })) {
+        for (std::size_t i = 0; i < n; ++i) {
+            r.divV[i] = gradV[i].trace();
+            r.gradP[i] = gradP[i];
+        }
+        r.flat = n;
+        return;
+    }
+    std::vector<std::size_t> offsets(2 * n + 1, 0);
+    std::vector<NeighbourList::Index> indices;
+    indices.reserve(2 * rows.pairCount());
+    for (int half = 0; half < 2; ++half)
+        for (std::size_t i = 0; i < n; ++i) {
+            const std::size_t a = std::size_t(half) * n + i;
+            indices.insert(indices.end(), rows.indices().begin() + std::ptrdiff_t(rows.offsets()[i]),
+                           rows.indices().begin() + std::ptrdiff_t(rows.offsets()[i + 1]));
+            offsets[a + 1] = indices.size();
+        }
+    const NeighbourList shiftedRows(std::move(offsets), std::move(indices));
+    const std::vector<double> hField(2 * n, h);
+    shifted_.rebuild(points, x, shiftedRows, hField, weight);
+
+    const std::vector<double> pS = shifted_.valueOf(p);
+    const std::vector<Vector<Dim>> gpS = shifted_.gradientOf(p);
+    const std::vector<Tensor<Dim>> gvS = shifted_.gradientOf(v);
+    std::vector<std::vector<double>> vS(Dim);
+    for (int k = 0; k < Dim; ++k) {
+        std::vector<double> vk(n);
+        for (std::size_t i = 0; i < n; ++i) vk[i] = v[i](k);
+        vS[std::size_t(k)] = shifted_.valueOf(vk);
+    }
+    const auto& status = shifted_.status();
+    for (std::size_t i = 0; i < n; ++i) {
+        using Status = typename LeastSquaresOperators<Dim>::Status;
+        if (!flat[i] && (status[i] != Status::ok || status[n + i] != Status::ok)) {
+            flat[i] = 2;
+            r.shift[i] = 0;
+        }
+        if (flat[i]) {
+            (flat[i] == 1 ? r.flat : r.tooFew) += 1;
+            r.divV[i] = gradV[i].trace();
+            r.gradP[i] = gradP[i];
+            continue;
+        }
+        const Vector<Dim>& nn = dir[i];
+        const double rc = rho[i] * c[i];
+        const Tensor<Dim> dGv = 0.5 * (gvS[i] - gvS[n + i]);  // (Pi+ - Pi-) grad v / 2
+        const Vector<Dim> dGp = 0.5 * (gpS[i] - gpS[n + i]);
+        r.divV[i] = 0.5 * (gvS[i].trace() + gvS[n + i].trace()) + nn.dot(dGp) / rc;
+        r.gradP[i] = 0.5 * (gpS[i] + gpS[n + i]) + rc * nn.dot(dGv * nn) * nn;
+        r.vCorrect[i] = (0.5 * (pS[i] - pS[n + i]) / rc) * nn;
+        double dv = 0;
+        for (int k = 0; k < Dim; ++k) dv += 0.5 * (vS[std::size_t(k)][i] - vS[std::size_t(k)][n + i]) * nn(k);
+        r.pCorrect[i] = rc * dv;
+    }
+}
+
+template <int Dim>
+void EulerPart<Dim>::advance(double dt, std::vector<double>& rho, std::vector<Vector<Dim>>& v,
+                             std::vector<double>& p, std::vector<double>* e,
+                             const std::vector<double>& c) const {
+    const EulerUpwind<Dim>& r = result_;
+    parallelFor(rho.size(), [&](std::size_t i) {
+        const double rho0 = rho[i], p0 = p[i], div = r.divV[i];
+        rho[i] = rho0 - dt * rho0 * div;
+        v[i] -= (dt / rho0) * r.gradP[i];
+        p[i] = p0 - dt * rho0 * c[i] * c[i] * div;
+        if (e) (*e)[i] -= dt * p0 * div / rho0;
+    });
+}
+
+template class EulerPart<1>;
+template class EulerPart<2>;
+template class EulerPart<3>;
+
+}  // namespace mfdyn::fpm
