@@ -36,6 +36,7 @@ void EulerPart<Dim>::upwind(const std::vector<Vector<Dim>>& x, const NeighbourLi
     r.gradP.assign(n, Vector<Dim>::Zero());
     r.vCorrect.assign(n, Vector<Dim>::Zero());
     r.pCorrect.assign(n, 0.0);
+    r.vUpwind = v;
     r.shift.assign(n, 0.0);
     r.flat = r.tooFew = 0;
 
@@ -111,7 +112,11 @@ void EulerPart<Dim>::upwind(const std::vector<Vector<Dim>>& x, const NeighbourLi
         r.gradP[i] = 0.5 * (gpS[i] + gpS[n + i]) + rc * nn.dot(dGv * nn) * nn;
         r.vCorrect[i] = (0.5 * (pS[i] - pS[n + i]) / rc) * nn;
         double dv = 0;
-        for (int k = 0; k < Dim; ++k) dv += 0.5 * (vS[std::size_t(k)][i] - vS[std::size_t(k)][n + i]) * nn(k);
+        for (int k = 0; k < Dim; ++k) {
+            dv += 0.5 * (vS[std::size_t(k)][i] - vS[std::size_t(k)][n + i]) * nn(k);
+            r.vUpwind[i](k) = 0.5 * (vS[std::size_t(k)][i] + vS[std::size_t(k)][n + i]);
+        }
+        r.vUpwind[i] += r.vCorrect[i];
         r.pCorrect[i] = rc * dv;
     }
 }

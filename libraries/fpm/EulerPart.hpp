@@ -12,9 +12,10 @@
 //
 // The first two are what the update uses (EulerPart::advance: rho -= dt rho div v_uw,
 // v -= dt grad p_uw / rho, p -= dt rho c^2 div v_uw, e -= dt p div v_uw / rho, all from the
-// step's start values); the last two are returned for the particle motion to come (v_uw) and the
-// tests. Central evaluation (the particle's own central gradients, no correction) where |grad p| <=
-// gradientFloor x (|p| + pScale) / h (the corrections vanish there anyway, the note's [R]), or
+// step's start values); v_uw (the particle's own v where central) moves the particles with
+// `motion { velocity upwind; }`; the two corrections are returned for the tests. Central
+// evaluation (the particle's own central gradients, no correction) where |grad p| <= gradientFloor
+// x (|p| + pScale) / h (the corrections vanish there anyway, the note's [R]), or
 // where a shifted fit fails (fewer than 2(d+1) neighbours with a positive weight, or singular):
 // both counted. For linear v and p the derivative corrections vanish to round-off (R3 of §4b).
 #include "core/Tensor.hpp"
@@ -42,6 +43,7 @@ struct EulerUpwind {
     std::vector<Vector<Dim>> gradP;     // grad p_uw
     std::vector<Vector<Dim>> vCorrect;  // v_uw - Pi^c v
     std::vector<double> pCorrect;       // p_uw - Pi^c p
+    std::vector<Vector<Dim>> vUpwind;   // v_uw = Pi^c v + vCorrect (central: the particle's v)
     std::vector<double> shift;          // l (0 where central)
     std::size_t flat = 0;               // central: |grad p| ~ 0
     std::size_t tooFew = 0;             // central: a shifted fit failed

@@ -4,16 +4,18 @@
 // weights by name); the system is split into a volumetric (Euler), a deviatoric (shear) and a
 // rotation part (§3.1). Built: the rotation part (§3.4) with prescribed or frozen particle motion
 // (the rotation-only test, §4.9, R4 of §4b) and the Euler part (§3.2, fpm/EulerPart.hpp: the
-// pressure-gradient upwinding) on frozen particles (the Euler validation, §4.4, R6); the shear part
-// is refused at its entry until it is built. A step:
+// pressure-gradient upwinding) on frozen particles (the Euler validation, §4.4, R6) or moving them
+// with its upwind velocity v_uw (the thesis's Euler-only runs, R6L); the shear part is refused at
+// its entry until it is built. A step:
 //
-//     neighbours (cell list, radius h, self included; (1 + maxShift) h for the Euler part's shifted
-//     fits when a particle is shifted) -> fit (weights
-//     once per particle, applied to the components of v and to p) -> euler (n = grad p / |grad p|,
-//     c^2 from the particle's equationOfState at (rho, e), the fits at x -+ l n, rho, v, p, e
-//     updated by forward Euler) -> rotation (on the Euler part's v: grad v refitted) (W = skew grad v, S <- exp(dt W) S exp(dt W)^T)
-//     -> volume (V <- V (1 + dt div v), the note's §4b remark) -> motion (prescribed: the exact
-//     rigid rotation of x, v = omega a x (x - c); frozen: none)
+//     neighbours (cell list, radius h, self included; (1 + maxShift) h for the Euler part's
+//     shifted fits when a particle is shifted) -> fit (weights once per particle, applied to the
+//     components of v and to p) -> euler (n = grad p / |grad p|, c^2 from the particle's
+//     equationOfState at (rho, e), the fits at x -+ l n, rho, v, p, e updated by forward Euler)
+//     -> rotation (on the Euler part's v: grad v refitted; W = skew grad v,
+//     S <- exp(dt W) S exp(dt W)^T) -> volume (V <- V (1 + dt div v), the note's §4b remark)
+//     -> motion (prescribed: the exact rigid rotation of x, v = omega a x (x - c); upwind:
+//     x <- x + dt v_uw of the step's start; frozen: none)
 //
 // constant/fpmProperties:
 //     subsystems (euler rotation);      // euler | shear | rotation (shear is not built); the order
@@ -27,6 +29,7 @@
 //     smoothingLength 1.5;              // or h itself (not both)
 //     spacing    0.75;                  // optional: the particle spacing (default: the largest V^(1/d))
 //     motion     { velocity prescribed; omega 1; axis (0 0 -1); centre (0 0 0); }   // or { velocity frozen; }
+//                                       // or { velocity upwind; } (euler: x <- x + dt v_uw)
 //     initialState { type rigidRotation; omega (0 0 -1); }   // optional, with velocity frozen: v at a fresh start
 //     initialStress { S (10 -10 0 0 0 0); shape { type box; min (-9 -9 -9); max (0 9 9); } }  // optional
 //
@@ -44,8 +47,9 @@
 // Euler part's Dp/Dt) is a RunError naming the particle. The rotation part uses no material.
 //
 // Fields: position x, velocity v, density rho (particleGen's, constant in the rotation part),
-// pressure p (0 unless given), specificInternalEnergy e (euler, an EOS that needs it), deviatoricStress S (symmetric), volume V (m / rho at a fresh start),
-// globalId. With prescribed motion and the rotation part alone, the exact answer is known for any
+// pressure p (0 unless given), specificInternalEnergy e (euler, an EOS that needs it),
+// deviatoricStress S (symmetric), volume V (m / rho at a fresh start), globalId.
+// With prescribed motion and the rotation part alone, the exact answer is known for any
 // initial stress, S_exact(x, t) = Q(t) S0(Q(t)^T x) Q(t)^T with Q(t) the rotation by omega t (§4.9's
 // S11 = 10 cos 2t, S21 = -10 sin 2t for S0 = diag(10, -10, 0), omega 1, axis -z): every step
 // measures max |S - S_exact| (components), max | |x - c| - |x0 - c| | and the largest |S| of the
@@ -110,9 +114,10 @@ NeighbourSearchOptions searchOptions() {
 template <int Dim>
 KeywordSchema FpmSolver<Dim>::motionKeywords() {
     return KeywordSchema("solver", "fpmSolid/motion")
-        .word("velocity", {"prescribed", "frozen"},
+        .word("velocity", {"prescribed", "frozen", "upwind"},
               "the particles' motion: the rigid rotation v = omega axis x (x - centre), moved exactly "
-              "(x <- c + Q (x - c), |x - c| kept to round-off), or none")
+              "(x <- c + Q (x - c), |x - c| kept to round-off), none, or the Euler part's upwind "
+              "velocity v_uw (x <- x + dt v_uw, the thesis's Euler-only runs; subsystems with euler)")
         .scalar("omega", "rad/s", "the angular speed of the prescribed rotation (velocity prescribed)")
         .optional()
         .vector("axis", "-", "the rotation axis, normalised here (velocity prescribed)")
@@ -284,6 +289,9 @@ void FpmSolver<Dim>::readMaterials() {
 
 template <int Dim>
 void FpmSolver<Dim>::readEuler() {
+    if (!euler_ && upwindMotion_)
+        throw settings_.dictionary("motion").error(
+            "velocity", "velocity upwind is the Euler part's: subsystems with euler");
     if (!euler_) {
         if (settings_.given("euler"))
             throw properties_.error("euler", "euler { ... } is for subsystems with euler");
@@ -292,8 +300,8 @@ void FpmSolver<Dim>::readEuler() {
     if (prescribed_)
         throw settings_.dictionary("motion").error(
             "velocity",
-            "the Euler part evolves v: it runs on frozen particles (motion { velocity frozen; }); "
-            "the Lagrangian motion with the upwind velocity is not built yet");
+            "the Euler part evolves v: it runs on frozen particles (motion { velocity frozen; }) "
+            "or moves them with its upwind velocity (motion { velocity upwind; })");
     fpm::UpwindOptions upwind;
     if (settings_.given("euler")) {
         const KeywordValues& e = settings_.nested("euler");
@@ -341,12 +349,14 @@ void FpmSolver<Dim>::readMotion() {
     const KeywordValues& motion = settings_.nested("motion");
     const Dictionary& dict = settings_.dictionary("motion");
     prescribed_ = motion.word("velocity") == "prescribed";
+    upwindMotion_ = motion.word("velocity") == "upwind";
     const std::vector<double>& c = motion.vector("centre");
     for (int k = 0; k < Dim; ++k) centre_(k) = c[std::size_t(k)];
     if (!prescribed_) {
         for (const char* key : {"omega", "axis"})
             if (motion.given(key))
-                throw dict.error(key, std::string(key) + " belongs to velocity prescribed, not frozen");
+                throw dict.error(key, std::string(key) + " belongs to velocity prescribed, not " +
+                                          motion.word("velocity"));
         return;
     }
     if (!motion.given("omega") || !motion.given("axis"))
@@ -444,14 +454,16 @@ void FpmSolver<Dim>::initialiseFields() {
                          " <= " + formatKeywordNumber(eulerPart_->options().maxShift) + " h)"
                    : std::string())
         << (rotation_ ? " rotation (exact exp map)" : "") << "; motion: "
-        << (prescribed_ ? "prescribed rigid rotation, omega " + formatKeywordNumber(omega_)
-                        : std::string("frozen"));
+        << (prescribed_     ? "prescribed rigid rotation, omega " + formatKeywordNumber(omega_)
+            : upwindMotion_ ? std::string("the Euler part's upwind velocity, x <- x + dt v_uw")
+                            : std::string("frozen"));
     Log::info(log.str());
 }
 
 template <int Dim>
 TimeStepVote FpmSolver<Dim>::stableTimeStep() {
-    if (!prescribed_) return {std::numeric_limits<double>::infinity(), "frozen particles"};
+    if (!prescribed_)
+        return {std::numeric_limits<double>::infinity(), upwindMotion_ ? "fixed deltaT" : "frozen particles"};
     const double vmax =
         std::sqrt(GlobalReduce::max(v_.size(), [&](std::size_t i) { return v_[i].squaredNorm(); }));
     return {vmax > 0 ? time().maxCo() * spacing_ / vmax : std::numeric_limits<double>::infinity(), "Courant"};
@@ -506,6 +518,11 @@ void FpmSolver<Dim>::step(double dt) {
         auto timed = phase("volume");
         std::vector<double>& V = *V_;
         parallelFor(n, [&](std::size_t i) { V[i] *= 1.0 + dt * gradV_[i].trace(); });
+    }
+    if (upwindMotion_) {  // with the v_uw of the step's start (EulerPart::upwind)
+        auto timed = phase("motion");
+        const auto& vUw = eulerPart_->result().vUpwind;
+        parallelFor(n, [&](std::size_t i) { x_[i] += dt * vUw[i]; });
     }
     if (prescribed_) {
         auto timed = phase("motion");

@@ -62,7 +62,8 @@ private:
     SymmTensor<Dim> stress0_{};
     bool hasInitialStress_ = false;
 
-    bool prescribed_ = false;  // motion: prescribed rigid rotation, else frozen
+    bool prescribed_ = false;    // motion: prescribed rigid rotation, else frozen
+    bool upwindMotion_ = false;  // motion: the Euler part's upwind velocity
     double omega_ = 0;
     Vector<3> axis_ = Vector<3>::UnitZ();
     Vector<Dim> centre_ = Vector<Dim>::Zero();

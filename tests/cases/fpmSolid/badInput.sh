@@ -30,6 +30,8 @@ refused unknownSubsystem "^subsystems" "unknown subsystem 'rotaton'; valid choic
     sed -i 's/^subsystems .*/subsystems (rotaton);/' constant/fpmProperties
 refused eulerPrescribed "^motion" "the Euler part evolves v: it runs on frozen particles" \
     sed -i 's/^subsystems .*/subsystems (euler rotation);/' constant/fpmProperties
+refused upwindWithoutEuler "^motion" "velocity upwind is the Euler part's: subsystems with euler" \
+    sed -i 's/^motion .*/motion { velocity upwind; }/' constant/fpmProperties
 refused eulerNoMaterials "^subsystems" "the Euler part needs constant/materialProperties with an equationOfState" \
     sed -i 's/^subsystems .*/subsystems (euler rotation);/; s/^motion .*/motion { velocity frozen; }/' constant/fpmProperties
 refused eulerBothDeltas "^euler" "give delta (a time) or deltaFraction (of h), not both" \
