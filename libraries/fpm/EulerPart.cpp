@@ -40,27 +40,33 @@ void EulerPart<Dim>::upwind(const std::vector<Vector<Dim>>& x, const NeighbourLi
     r.shift.assign(n, 0.0);
     r.flat = r.tooFew = 0;
 
-    // n_i and the shift; the shifted points y+ = x - l n (first n points) and y- = x + l n.
+    // n_i and the shift of the m shifted particles (active[j] = i, slot[i] = j); their shifted
+    // points y+ = x - l n (points j < m) and y- = x + l n (points m + j).
     std::vector<Vector<Dim>> dir(n, Vector<Dim>::Zero());
     std::vector<char> flat(n, 0);
-    std::vector<Vector<Dim>> points(2 * n);
+    std::vector<std::size_t> active, slot(n, 0);
     for (std::size_t i = 0; i < n; ++i) {
         const double g = gradP[i].norm();
         if (!shifts(g, p[i], h)) {
             flat[i] = 1;
-            points[i] = points[n + i] = x[i];
             continue;
         }
         dir[i] = gradP[i] / g;
-        const double l =
+        r.shift[i] =
             std::min(upwind_.deltaIsTime ? upwind_.delta * c[i] : upwind_.delta * h, upwind_.maxShift * h);
-        r.shift[i] = l;
-        points[i] = x[i] - l * dir[i];
-        points[n + i] = x[i] + l * dir[i];
+        slot[i] = active.size();
+        active.push_back(i);
     }
-    // rows of the 2n points: particle i's row for both of its points (no shifted fit at all when
+    const std::size_t m = active.size();
+    std::vector<Vector<Dim>> points(2 * m);
+    for (std::size_t j = 0; j < m; ++j) {
+        const std::size_t i = active[j];
+        points[j] = x[i] - r.shift[i] * dir[i];
+        points[m + j] = x[i] + r.shift[i] * dir[i];
+    }
+    // rows of the 2m points: particle i's row for both of its points (no shifted fit at all when
     // every particle is central)
-    if (std::all_of(flat.begin(), flat.end(), [](char f) { return f != 0; })) {
+    if (m == 0) {
         for (std::size_t i = 0; i < n; ++i) {
             r.divV[i] = gradV[i].trace();
             r.gradP[i] = gradP[i];
@@ -68,18 +74,17 @@ void EulerPart<Dim>::upwind(const std::vector<Vector<Dim>>& x, const NeighbourLi
         r.flat = n;
         return;
     }
-    std::vector<std::size_t> offsets(2 * n + 1, 0);
+    std::vector<std::size_t> offsets(2 * m + 1, 0);
     std::vector<NeighbourList::Index> indices;
-    indices.reserve(2 * rows.pairCount());
     for (int half = 0; half < 2; ++half)
-        for (std::size_t i = 0; i < n; ++i) {
-            const std::size_t a = std::size_t(half) * n + i;
+        for (std::size_t j = 0; j < m; ++j) {
+            const std::size_t i = active[j], a = std::size_t(half) * m + j;
             indices.insert(indices.end(), rows.indices().begin() + std::ptrdiff_t(rows.offsets()[i]),
                            rows.indices().begin() + std::ptrdiff_t(rows.offsets()[i + 1]));
             offsets[a + 1] = indices.size();
         }
     const NeighbourList shiftedRows(std::move(offsets), std::move(indices));
-    const std::vector<double> hField(2 * n, h);
+    const std::vector<double> hField(2 * m, h);
     shifted_.rebuild(points, x, shiftedRows, hField, weight);
 
     const std::vector<double> pS = shifted_.valueOf(p);
@@ -94,7 +99,8 @@ void EulerPart<Dim>::upwind(const std::vector<Vector<Dim>>& x, const NeighbourLi
     const auto& status = shifted_.status();
     for (std::size_t i = 0; i < n; ++i) {
         using Status = typename LeastSquaresOperators<Dim>::Status;
-        if (!flat[i] && (status[i] != Status::ok || status[n + i] != Status::ok)) {
+        const std::size_t a = slot[i], b = m + slot[i];  // y+ and y- of a shifted particle
+        if (!flat[i] && (status[a] != Status::ok || status[b] != Status::ok)) {
             flat[i] = 2;
             r.shift[i] = 0;
         }
@@ -106,15 +112,15 @@ void EulerPart<Dim>::upwind(const std::vector<Vector<Dim>>& x, const NeighbourLi
         }
         const Vector<Dim>& nn = dir[i];
         const double rc = rho[i] * c[i];
-        const Tensor<Dim> dGv = 0.5 * (gvS[i] - gvS[n + i]);  // (Pi+ - Pi-) grad v / 2
-        const Vector<Dim> dGp = 0.5 * (gpS[i] - gpS[n + i]);
-        r.divV[i] = 0.5 * (gvS[i].trace() + gvS[n + i].trace()) + nn.dot(dGp) / rc;
-        r.gradP[i] = 0.5 * (gpS[i] + gpS[n + i]) + rc * nn.dot(dGv * nn) * nn;
-        r.vCorrect[i] = (0.5 * (pS[i] - pS[n + i]) / rc) * nn;
+        const Tensor<Dim> dGv = 0.5 * (gvS[a] - gvS[b]);  // (Pi+ - Pi-) grad v / 2
+        const Vector<Dim> dGp = 0.5 * (gpS[a] - gpS[b]);
+        r.divV[i] = 0.5 * (gvS[a].trace() + gvS[b].trace()) + nn.dot(dGp) / rc;
+        r.gradP[i] = 0.5 * (gpS[a] + gpS[b]) + rc * nn.dot(dGv * nn) * nn;
+        r.vCorrect[i] = (0.5 * (pS[a] - pS[b]) / rc) * nn;
         double dv = 0;
         for (int k = 0; k < Dim; ++k) {
-            dv += 0.5 * (vS[std::size_t(k)][i] - vS[std::size_t(k)][n + i]) * nn(k);
-            r.vUpwind[i](k) = 0.5 * (vS[std::size_t(k)][i] + vS[std::size_t(k)][n + i]);
+            dv += 0.5 * (vS[std::size_t(k)][a] - vS[std::size_t(k)][b]) * nn(k);
+            r.vUpwind[i](k) = 0.5 * (vS[std::size_t(k)][a] + vS[std::size_t(k)][b]);
         }
         r.vUpwind[i] += r.vCorrect[i];
         r.pCorrect[i] = rc * dv;
