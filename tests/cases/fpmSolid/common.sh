@@ -11,6 +11,16 @@ copyTutorial() {
     cp -r "$SOURCE/tutorials/fpmSolid/$1" "$2"
     rm -rf "$2"/log.* "$2"/postProcessing "$2"/[0-9]* "$2"/*.png "$2"/particles.pvd
 }
+# coarseSphere <case> <deltaT>: the default tests' coarse reference sphere (spacing 1.25, h = 2.5:
+# 280 particles, against the tutorials' thesis values 0.75 / 1.5) and the step deltaT.
+coarseSphere() {
+    sed -i 's/spacing 0.75; }/spacing 1.25; }/' "$1/system/particleGenDict"
+    sed -i 's/^smoothingLength .*/smoothingLength 2.5;/' "$1/constant/fpmProperties"
+    sed -i "s/^deltaT .*/deltaT $2;/" "$1/system/controlDict"
+    grep -q "spacing 1.25; }" "$1/system/particleGenDict" || fail "could not set the spacing in $1"
+    grep -q "^smoothingLength 2.5;" "$1/constant/fpmProperties" || fail "could not set h in $1"
+    grep -q "^deltaT $2;" "$1/system/controlDict" || fail "could not set deltaT in $1"
+}
 # run <case> <application>: runs it with its log in the case.
 run() {
     "$2" -case "$1" > "$1/log.$2" 2>&1 || fail "$2 on $1: $(tail -n 20 "$1/log.$2")"

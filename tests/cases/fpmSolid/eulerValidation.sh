@@ -10,11 +10,7 @@
 source "$(dirname "$0")/common.sh"
 c="$WORK/eulerValidation"
 copyTutorial eulerValidation "$c"
-sed -i 's/spacing 0.75; }/spacing 1.25; }/' "$c/system/particleGenDict"
-sed -i 's/^smoothingLength .*/smoothingLength 2.5;/' "$c/constant/fpmProperties"
-sed -i 's/^deltaT .*/deltaT 0.005;/' "$c/system/controlDict"
-grep -q "spacing 1.25; }" "$c/system/particleGenDict" || fail "could not set the spacing"
-grep -q "^smoothingLength 2.5;" "$c/constant/fpmProperties" || fail "could not set h"
+coarseSphere "$c" 0.005
 grep -q "^endTime *5;" "$c/system/controlDict" || fail "the tutorial no longer ends at 5 s"
 run "$c" particleGen
 run "$c" fpmSolid
@@ -44,9 +40,8 @@ grep -q "never read" "$c/log.fpmSolid" && fail "an entry was never read: $(grep 
 # is needed). Forward Euler, dt 0.005: 1e-3 relative (R6L's tolerance); rho and p uniform to 1e-9.
 l="$WORK/lagrangian"
 copyTutorial eulerValidation "$l"
-sed -i 's/spacing 0.75; }/spacing 1.25; }/' "$l/system/particleGenDict"
-sed -i 's/^smoothingLength .*/smoothingLength 2.5;/; s/velocity frozen;/velocity upwind;/' "$l/constant/fpmProperties"
-sed -i 's/^deltaT .*/deltaT 0.005;/' "$l/system/controlDict"
+coarseSphere "$l" 0.005
+sed -i 's/velocity frozen;/velocity upwind;/' "$l/constant/fpmProperties"
 grep -q "velocity upwind;" "$l/constant/fpmProperties" || fail "could not set velocity upwind"
 run "$l" particleGen
 run "$l" fpmSolid

@@ -8,11 +8,7 @@
 source "$(dirname "$0")/common.sh"
 c="$WORK/rotationOnly"
 copyTutorial rotationOnly "$c"
-sed -i 's/spacing 0.75; }/spacing 1.25; }/' "$c/system/particleGenDict"
-sed -i 's/^smoothingLength .*/smoothingLength 2.5;/' "$c/constant/fpmProperties"
-sed -i 's/^deltaT .*/deltaT 0.005;/' "$c/system/controlDict"
-grep -q "spacing 1.25; }" "$c/system/particleGenDict" || fail "could not set the spacing"
-grep -q "^smoothingLength 2.5;" "$c/constant/fpmProperties" || fail "could not set h"
+coarseSphere "$c" 0.005
 grep -q "^endTime *12.5;" "$c/system/controlDict" || fail "the tutorial no longer ends at 12.5 s"
 run "$c" particleGen
 run "$c" fpmSolid

@@ -6,9 +6,7 @@ source "$(dirname "$0")/common.sh"
 # 3D, spacing 1.25, h 2.5, dt 0.01 to 12.5 (1250 steps), written every 3.125 s.
 c="$WORK/straight"
 copyTutorial rotationOnly "$c"
-sed -i 's/spacing 0.75; }/spacing 1.25; }/' "$c/system/particleGenDict"
-sed -i 's/^smoothingLength .*/smoothingLength 2.5;/' "$c/constant/fpmProperties"
-sed -i 's/^deltaT .*/deltaT 0.01;/' "$c/system/controlDict"
+coarseSphere "$c" 0.01
 run "$c" particleGen
 run "$c" fpmSolid
 r="$WORK/restart"
