@@ -12,8 +12,8 @@
 // boundary layer, so that the centre of mass below is that of the body and not of the sampling).
 //
 // Detection, two tests, both needed:
-//   1. Centre-of-mass offset (the kernel-sum gradient idea; e.g. Dilts 2000, Randles & Libersky
-//      1996): s_i = sum_j w_j r_j over the neighbourhood with self, and the ratio
+//   1. Centre-of-mass offset (the direction of the kernel-sum gradient): s_i = sum_j w_j r_j over
+//      the neighbourhood with self, and the ratio
 //          c_i = |s_i| / (h_i sum_j w_j)    (0 inside a uniform lattice, 0.071 on a flat face of a
 //                                            cubic lattice at h = 2 spacings; see Options)
 //      must exceed Options::offsetThreshold. It is a cheap prefilter: in a jittered cloud interior
@@ -24,9 +24,10 @@
 //      particle is on the surface when no neighbour j lies in the umbrella-shaped region
 //          |r_j| >= sqrt(2) l  and  |x_j - T| < l                       (the cap), or
 //          |r_j| <  sqrt(2) l  and  |n.(x_j - T)| + |(x_j - T) - n (n.(x_j - T))| < l   (the cone)
-//      i.e. the 90-degree cone from x_i along n up to T, capped by the ball of radius l about T
-//      (Marrone et al.'s 2D region; in 3D the tangential distance |tau.(x_j - T)| becomes the distance
-//      from the axis). It rejects the candidates of test 1 that have a particle outside them.
+//      i.e. the cone of half-angle 45 degrees from x_i along n up to T, capped by the ball of
+//      radius l about T (their region with tau.(x_j - T) written as the distance from the axis,
+//      which is the same in 2D and the rotationally symmetric region in 3D). It rejects the
+//      candidates of test 1 that have a particle outside them.
 //      The region reaches 2 l from x_i, so l <= h_i / 2 (the default) keeps it inside the rows.
 //   A particle with no neighbour at all is on the surface, with a zero normal.
 //
@@ -60,9 +61,9 @@
 //   h = 2a, a = 0.75 and 0.375), max / mean in degrees: see the test's header.
 //
 // Cost: one pass over the rows (detection and the covariance normal), plus, for planeFit and
-// smoothedCovariance, a second pass over the rows of the surface particles; every loop is a gather over particle i's own
-// row (parallelForWork), so the results are bit-identical for any thread count. The output arrays
-// are resized, never shrunk.
+// smoothedCovariance, a second pass over the rows of the surface particles; every loop is a
+// gather over particle i's own row (parallelForWork), so the results are bit-identical for any
+// thread count. The output arrays are resized, never shrunk.
 #include "core/Tensor.hpp"
 #include "particles/NeighbourList.hpp"
 
