@@ -20,14 +20,17 @@
 //      particles reach c of the order of a face's, so test 2 decides.
 //   2. Scan region (Marrone, Colagrossi, Le Touzé & Graziani 2010, "Fast free-surface detection
 //      and level-set function definition in SPH solvers", J. Comput. Phys. 229, 3652-3663): with
-//      n_i the candidate's normal (below), l = Options::scanLength h_i and T = x_i + l n_i, the
+//      n_i a normal of the candidate, l = Options::scanLength h_i and T = x_i + l n_i, the
 //      particle is on the surface when no neighbour j lies in the umbrella-shaped region
 //          |r_j| >= sqrt(2) l  and  |x_j - T| < l                       (the cap), or
 //          |r_j| <  sqrt(2) l  and  |n.(x_j - T)| + |(x_j - T) - n (n.(x_j - T))| < l   (the cone)
 //      i.e. the cone of half-angle 45 degrees from x_i along n up to T, capped by the ball of
 //      radius l about T (their region with tau.(x_j - T) written as the distance from the axis,
 //      which is the same in 2D and the rotationally symmetric region in 3D). It rejects the
-//      candidates of test 1 that have a particle outside them.
+//      candidates of test 1 that have a particle outside them. It is tried with the covariance
+//      normal (below) and, if that region holds a neighbour, with the centre-of-mass normal: either
+//      empty suffices (a jittered face particle whose covariance normal tilts into a neighbour is
+//      found along the other; with Normals::centreOfMass only that one is tried).
 //      The region reaches 2 l from x_i, so l <= h_i / 2 (the default) keeps it inside the rows.
 //   A particle with no neighbour at all is on the surface, with a zero normal.
 //
@@ -55,8 +58,8 @@
 //                 support: on the test lattices (tests/unit/meshfreeOperators/SurfaceDetectionTest.cpp,
 //                 h = 2 spacings) its mean error is about 2/3 of centreOfMass's and its largest
 //                 below it.
-//   Test 2 uses the centre-of-mass normal (centreOfMass) or the covariance normal (the others), so
-//   planeFit and smoothedCovariance take one more pass over the rows of the surface particles.
+//   planeFit and smoothedCovariance need the surface flags of the neighbours, so they take one more
+//   pass over the rows of the surface particles.
 //   Measured angles against the exact normal of a lattice sphere and disc (R = 5, spacing a,
 //   h = 2a, a = 0.75 and 0.375), max / mean in degrees: see the test's header.
 //

@@ -283,10 +283,20 @@ TEST(SurfaceDetection, boxFacesExact) {
     std::printf("offset ratio c on a face %.4f, one spacing below it %.4f\n", faceRatio, belowRatio);
 }
 
-// A lattice jittered by up to 0.2 a per component: no particle more than h inside the box's
-// original faces is flagged (their offset ratio reaches 0.10, above a perfect face's 0.07: the
-// scan region, not the threshold, keeps them out), and at least 99% of the face particles are.
-TEST(SurfaceDetection, jitteredInteriorNotFlagged) {
+// A lattice jittered by up to 0.2 a per component (the box of boxFacesExact): particles more than h
+// inside the box's original faces are the interior, the particles of the original faces the
+// surface. Their offset ratio reaches 0.10 in the interior, above a perfect face's 0.07: the scan
+// region, not the threshold, keeps the interior out. With seed 23 no interior particle is flagged
+// and 1534 of the 1538 face particles are found; over seeds 1-12, 2 interior particles of
+// 15 972 are flagged (a cone of one spacing holds about two particles and can be empty) and
+// 18 428 of 18 456 face particles found (a face particle whose both cones the jitter tilts into a
+// neighbour is missed).
+struct JitterFigures {
+    std::size_t interior = 0, flagged = 0, face = 0, faceFound = 0;
+    double maxRatio = 0.0;
+};
+
+JitterFigures jitteredBox(unsigned seed) {
     const int n = 16;
     const double a = 0.75, h = 2 * a;
     const auto inside = [&](const std::array<int, 3>& c) {
@@ -296,14 +306,13 @@ TEST(SurfaceDetection, jitteredInteriorNotFlagged) {
     };
     const Sites<3> sites = sitesOf<3>(n + 1, inside);
     std::vector<Vector<3>> x = positions<3>(sites, a);
-    std::mt19937_64 rng(23);
+    std::mt19937_64 rng(seed);
     std::uniform_real_distribution<double> jitter(-0.2 * a, 0.2 * a);
     for (auto& p : x)
         for (int d = 0; d < 3; ++d) p[d] += jitter(rng);
     Detector<3> detector;
     detector.detect(x, rowsOf(x, h, false), h);
-    std::size_t interior = 0, flagged = 0, face = 0, faceFound = 0;
-    double maxRatio = 0.0;
+    JitterFigures f;
     for (std::size_t i = 0; i < x.size(); ++i) {
         bool deep = true, onFace = false;
         for (int d = 0; d < 3; ++d) {
@@ -311,24 +320,40 @@ TEST(SurfaceDetection, jitteredInteriorNotFlagged) {
             onFace = onFace || sites[i][d] == 0 || sites[i][d] == n;
         }
         if (deep) {
-            ++interior;
-            flagged += detector.surface()[i];
-            maxRatio = std::max(maxRatio, detector.offsetRatio()[i]);
+            ++f.interior;
+            f.flagged += detector.surface()[i];
+            f.maxRatio = std::max(f.maxRatio, detector.offsetRatio()[i]);
         }
         if (onFace) {
-            ++face;
-            faceFound += detector.surface()[i];
+            ++f.face;
+            f.faceFound += detector.surface()[i];
         }
     }
+    return f;
+}
+
+TEST(SurfaceDetection, jitteredInteriorNotFlagged) {
+    const JitterFigures f = jitteredBox(23);
     std::printf(
-        "jittered box: %zu interior particles, %zu flagged, largest offset ratio %.4f; "
-        "%zu of %zu face particles found, %zu surface in all\n",
-        interior, flagged, maxRatio, faceFound, face, detector.surfaceCount());
-    EXPECT_GT(interior, 1000u);
-    EXPECT_EQ(flagged, 0u);
-    // The rough faces: a face particle whose covariance normal the jitter tilts can see a face
-    // neighbour in its scan cone (11 of 1538 measured, at edges and on faces alike).
-    EXPECT_GE(faceFound, face - face / 100);
+        "jittered box, seed 23: %zu interior particles, %zu flagged, largest offset ratio %.4f; "
+        "%zu of %zu face particles found\n",
+        f.interior, f.flagged, f.maxRatio, f.faceFound, f.face);
+    EXPECT_GT(f.interior, 1000u);
+    EXPECT_EQ(f.flagged, 0u);
+    EXPECT_GE(f.faceFound, f.face - f.face / 200);
+    JitterFigures all;
+    for (unsigned seed = 1; seed <= 12; ++seed) {
+        const JitterFigures s = jitteredBox(seed);
+        all.interior += s.interior;
+        all.flagged += s.flagged;
+        all.face += s.face;
+        all.faceFound += s.faceFound;
+    }
+    std::printf(
+        "jittered box, seeds 1-12: %zu of %zu interior particles flagged, %zu of %zu face particles found\n",
+        all.flagged, all.interior, all.faceFound, all.face);
+    EXPECT_LE(all.flagged, 3u);
+    EXPECT_GE(all.faceFound, all.face - all.face / 500);
 }
 
 TEST(SurfaceDetection, isolatedParticleAndBadInput) {
