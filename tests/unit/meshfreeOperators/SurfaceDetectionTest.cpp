@@ -192,7 +192,7 @@ TEST(SurfaceDetection, discDetectionAndNormals) {
     checkBall<2>(0.375, 32, 13, 32, 13, 24.5, 10.5, 25, 9);
 }
 
-// Self in the rows or not: the same answer, bit for bit; and for 1 and 4 threads.
+// Self in the rows or not, 1 or 4 threads, no volumes or uniform ones: the same answer, bit for bit.
 TEST(SurfaceDetection, selfInRowsAndThreadsDoNotMatter) {
     const double a = 0.375, h = 2 * a, R = 5.0;
     const auto inside = [&](const std::array<int, 3>& c) {
@@ -217,6 +217,11 @@ TEST(SurfaceDetection, selfInRowsAndThreadsDoNotMatter) {
         EXPECT_EQ(serial.surface(), without.surface());
         EXPECT_EQ(serial.normal(), without.normal());
         EXPECT_EQ(serial.offsetRatio(), without.offsetRatio());
+        // Uniform volumes: a common factor of the weights, a power of two so that it rounds nothing.
+        Detector<3> withVolumes(o);
+        withVolumes.detect(x, rowsOf(x, h, false), h, std::vector<double>(x.size(), 2.0));
+        EXPECT_EQ(withVolumes.surface(), without.surface());
+        EXPECT_EQ(withVolumes.normal(), without.normal());
     }
 }
 
