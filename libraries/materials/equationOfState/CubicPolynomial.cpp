@@ -3,7 +3,8 @@
 //
 //     P  = K1 mu + K2 mu^2 + K3 mu^3 + B0 rho0 e,    mu = rho/rho0 - 1,
 //     K1 = rho0 c0^2,  K2 = K1 (1 + 2 (S0 - 1)),  K3 = K1 (2 (S0 - 1) + 3 (S0 - 1)^2),
-//     c^2 = dP/drho|_e + (P/rho^2) dP/de|_rho = (K1 + 2 K2 mu + 3 K3 mu^2)/rho0 + B0 rho0 P / rho^2.
+//     g   = dP/de|_rho = B0 rho0,
+//     c^2 = dP/drho|_e + (P/rho^2) g = (K1 + 2 K2 mu + 3 K3 mu^2)/rho0 + B0 rho0 P / rho^2.
 //
 // K1 mu + K2 mu^2 + K3 mu^3 is the Taylor expansion to third order in mu of the Hugoniot of
 // Us = c0 + S0 up (see MieGruneisen.cpp), so the model is accurate for moderate compression
@@ -55,6 +56,10 @@ double CubicPolynomial::soundSpeedSquared(double rho, double e) const {
     double p, c2;
     state(rho, e, p, c2);
     return c2;
+}
+
+double CubicPolynomial::energyDerivative(double, double) const {
+    return B0_ * referenceDensity();
 }
 
 void CubicPolynomial::evaluate(std::size_t n, const double* rho, const double* e, double* p,

@@ -7,13 +7,26 @@
 //
 //     c^2 = dP/drho|_s = dP/drho|_e + (P/rho^2) dP/de|_rho,
 //
-// the derivative along an isentrope, on which de = (P/rho^2) drho (first law with ds = 0).
+// the derivative along an isentrope, on which de = (P/rho^2) drho (first law with ds = 0), and the
+// two partial derivatives that the pressure-rate form of the energy equation needs (the FPM solver's
+// Dp/Dt = -rho c_e^2 div v + (g/rho) sigma:epsdot, doc/methods/fpm.md section 1, von Nida 2005
+// Eq. 1.29):
+//
+//     g        = dP/de|_rho    [kg/m^3]   energyDerivative(rho, e), analytic in every model;
+//     c_e^2    = dP/drho|_e    [m^2/s^2]  densityDerivative(rho, e) = c^2 - P g / rho^2,
+//
+// the second from the identity above, so that c^2, g and c_e^2 are consistent by construction.
 //
 // Family contract (checked for every registered type by tests/unit/materials/
 // EquationOfStateContractTest.cpp):
 //   - pressure(referenceDensity(), 0) is the model's reference pressure (0 for all types except
 //     stiffenedGas, -gamma pRef, and polytropic, K rho0^gamma);
 //   - soundSpeedSquared equals the isentropic derivative above, analytically;
+//   - energyDerivative equals dP/de|_rho of pressure(), analytically, and densityDerivative
+//     (from the identity) dP/drho|_e; a barotropic model's g is 0. Where a tension cut-off
+//     (`minimumPressure` of mieGruneisen and tillotson) sets P = pMin, P does not depend on e and
+//     g is 0, while c^2 stays the uncut value (the time step must still resolve the material), so
+//     densityDerivative returns that uncut c^2 there;
 //   - c^2 is returned as computed, also where it is not positive (strong tension, expanded
 //     Tillotson states): the model does not clamp or throw, the caller decides (the solver's
 //     time-step vote and its state check name the particle).
@@ -75,6 +88,16 @@ public:
     virtual double pressure(double rho, double e) const = 0;
     // c^2 [m^2/s^2] = dP/drho at constant entropy; may be <= 0 in unphysical states (see above).
     virtual double soundSpeedSquared(double rho, double e) const = 0;
+    // g [kg/m^3] = dP/de at constant rho; 0 for a barotropic model and where a tension cut-off
+    // holds P at pMin (see above).
+    virtual double energyDerivative(double rho, double e) const = 0;
+    // c_e^2 [m^2/s^2] = dP/drho at constant e, from c^2 = dP/drho|_e + (P/rho^2) dP/de|_rho:
+    // c^2 - P g / rho^2 (the uncut c^2 where P is cut, g being 0 there). May be <= 0.
+    double densityDerivative(double rho, double e) const {
+        const double g = energyDerivative(rho, e);
+        const double c2 = soundSpeedSquared(rho, e);
+        return g == 0.0 ? c2 : c2 - pressure(rho, e) * g / (rho * rho);
+    }
     // False when P depends on rho only.
     virtual bool needsEnergy() const { return true; }
     // rho0 [kg/m^3]: the density at which the material is unstressed (the gases: the optional

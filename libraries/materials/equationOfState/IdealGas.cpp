@@ -2,7 +2,7 @@
 //
 //     P = (gamma - 1) rho e,    c^2 = gamma (gamma - 1) e = gamma P / rho.
 //
-// (c^2 from dP/drho|_e = (gamma - 1) e and dP/de|_rho = (gamma - 1) rho.) Valid for e >= 0; a
+// (c^2 from dP/drho|_e = (gamma - 1) e and g = dP/de|_rho = (gamma - 1) rho.) Valid for e >= 0; a
 // negative e gives P < 0 and c^2 < 0, which the solver reports.
 #include "materials/equationOfState/IdealGas.hpp"
 
@@ -36,6 +36,10 @@ double IdealGas::pressure(double rho, double e) const {
 
 double IdealGas::soundSpeedSquared(double, double e) const {
     return gamma_ * (gamma_ - 1.0) * e;
+}
+
+double IdealGas::energyDerivative(double rho, double) const {
+    return (gamma_ - 1.0) * rho;
 }
 
 void IdealGas::evaluate(std::size_t n, const double* rho, const double* e, double* p, double* c) const {

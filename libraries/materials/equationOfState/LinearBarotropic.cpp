@@ -3,9 +3,9 @@
 //
 //     P = c0^2 (rho - rho0),    c^2 = c0^2.
 //
-// P does not depend on e, so no energy equation is needed. Valid for small density changes (|rho/rho0
-// - 1| << 1) or as the isothermal model problem of the shock-bar tests (note 8.2); it allows any
-// tension.
+// P does not depend on e (g = dP/de|_rho = 0), so no energy equation is needed. Valid for small
+// density changes (|rho/rho0 - 1| << 1) or as the isothermal model problem of the shock-bar tests
+// (note 8.2); it allows any tension.
 #include "materials/equationOfState/LinearBarotropic.hpp"
 
 namespace mfdyn {
@@ -37,6 +37,10 @@ double LinearBarotropic::pressure(double rho, double) const {
 
 double LinearBarotropic::soundSpeedSquared(double, double) const {
     return c0_ * c0_;
+}
+
+double LinearBarotropic::energyDerivative(double, double) const {
+    return 0.0;
 }
 
 void LinearBarotropic::evaluate(std::size_t n, const double* rho, const double* e, double* p,

@@ -20,14 +20,14 @@
 // e = up^2/2) to round-off; the cubic deviates from it by (1 - Gamma0 mu/2)(P_cubic - P_H) =
 // O(A (s-1)^3 mu^4) (tests/unit/materials/MieGruenisenTest.cpp).
 //
-// Sound speed, with dP/de|_rho = Gamma0 rho:
+// Sound speed, with g = dP/de|_rho = Gamma0 rho:
 //
 //     c^2 = [(1 - Gamma0 mu/2) P_H'(mu) - Gamma0 P_H / 2] / rho0 + Gamma0 e + Gamma0 P / rho.
 //
 // `gruneisen constantRhoGamma` takes the usual hydrocode assumption Gamma rho = Gamma0 rho0
 // (Gamma/V constant; e.g. Meyers 1994 §4.6) instead of the thesis's constant Gamma:
 //
-//     P   = (1 - Gamma0 mu / (2 (1 + mu))) P_H(mu) + Gamma0 rho0 e,
+//     P   = (1 - Gamma0 mu / (2 (1 + mu))) P_H(mu) + Gamma0 rho0 e,    g = Gamma0 rho0,
 //     c^2 = [(1 - Gamma0 mu/(2(1+mu))) P_H' - Gamma0 P_H / (2 (1+mu)^2)] / rho0 + Gamma0 rho0 P / rho^2.
 //
 // Both agree to first order in mu and reproduce the same Hugoniot (the Hugoniot-energy identity
@@ -38,7 +38,9 @@
 //
 // Limits: no spall or tension cut-off in the thesis; `minimumPressure` clamps P from below
 // (P = max(P, pMin)) and leaves c^2 as the uncut value, since the cut-off models failed material
-// that the time step must still resolve, not a softer one. c^2 can be negative in strong tension.
+// that the time step must still resolve, not a softer one; where P is cut it does not depend on e,
+// so g = 0 there (and dP/drho|_e from the family's identity is the uncut c^2). c^2 can be negative
+// in strong tension. Beyond mu = 1/(s - 1) (linearUsUp) P, c^2 and g are NaN.
 #include "materials/equationOfState/MieGruneisen.hpp"
 
 #include <algorithm>
@@ -65,7 +67,7 @@ KeywordSchema MieGruneisen::keywords() {
         .word("gruneisen", {"constant", "constantRhoGamma"},
               "Gamma constant (Zisis 2017), or Gamma rho = Gamma0 rho0 (hydrocodes)")
         .orDefault("constant")
-        .scalar("minimumPressure", "Pa", "tension cut-off pMin: P = max(P, pMin), c^2 uncut")
+        .scalar("minimumPressure", "Pa", "tension cut-off pMin: P = max(P, pMin), c^2 uncut, g = 0 where cut")
         .atMost(0)
         .optional()
         .orEnclosing();
@@ -86,7 +88,7 @@ MieGruneisen::MieGruneisen(const Dictionary& dict) : EquationOfState(dict) {
     C_ = A_ * (2.0 * sm1 + 3.0 * sm1 * sm1);
 }
 
-void MieGruneisen::state(double rho, double e, double& p, double& c2) const {
+void MieGruneisen::uncut(double rho, double e, double& p, double& c2, double& g) const {
     const double rho0 = referenceDensity();
     const double mu = rho / rho0 - 1.0;
     double pH = A_ * mu, dpH = A_;
@@ -97,7 +99,7 @@ void MieGruneisen::state(double rho, double e, double& p, double& c2) const {
         } else {
             const double d = 1.0 - (s_ - 1.0) * mu;
             if (!(d > 0.0)) {
-                p = c2 = std::numeric_limits<double>::quiet_NaN();
+                p = c2 = g = std::numeric_limits<double>::quiet_NaN();
                 return;
             }
             pH = A_ * mu * (1.0 + mu) / (d * d);
@@ -107,15 +109,21 @@ void MieGruneisen::state(double rho, double e, double& p, double& c2) const {
     if (constantRhoGamma_) {
         const double q = 1.0 / (1.0 + mu);
         const double f = 1.0 - 0.5 * gamma0_ * mu * q;
-        const double pUncut = f * pH + gamma0_ * rho0 * e;
-        c2 = (f * dpH - 0.5 * gamma0_ * pH * q * q) / rho0 + gamma0_ * rho0 * pUncut / (rho * rho);
-        p = std::max(pUncut, pMin_);
+        g = gamma0_ * rho0;
+        p = f * pH + g * e;
+        c2 = (f * dpH - 0.5 * gamma0_ * pH * q * q) / rho0 + g * p / (rho * rho);
         return;
     }
     const double f = 1.0 - 0.5 * gamma0_ * mu;
-    const double pUncut = f * pH + gamma0_ * rho * e;
-    c2 = (f * dpH - 0.5 * gamma0_ * pH) / rho0 + gamma0_ * e + gamma0_ * pUncut / rho;
-    p = std::max(pUncut, pMin_);
+    g = gamma0_ * rho;
+    p = f * pH + g * e;
+    c2 = (f * dpH - 0.5 * gamma0_ * pH) / rho0 + gamma0_ * e + gamma0_ * p / rho;
+}
+
+void MieGruneisen::state(double rho, double e, double& p, double& c2) const {
+    double g;
+    uncut(rho, e, p, c2, g);
+    p = std::max(p, pMin_);
 }
 
 double MieGruneisen::pressure(double rho, double e) const {
@@ -128,6 +136,12 @@ double MieGruneisen::soundSpeedSquared(double rho, double e) const {
     double p, c2;
     state(rho, e, p, c2);
     return c2;
+}
+
+double MieGruneisen::energyDerivative(double rho, double e) const {
+    double p, c2, g;
+    uncut(rho, e, p, c2, g);
+    return p < pMin_ ? 0.0 : g;
 }
 
 void MieGruneisen::evaluate(std::size_t n, const double* rho, const double* e, double* p, double* c) const {

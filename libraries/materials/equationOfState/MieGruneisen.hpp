@@ -17,6 +17,7 @@ public:
 
     double pressure(double rho, double e) const override;
     double soundSpeedSquared(double rho, double e) const override;
+    double energyDerivative(double rho, double e) const override;
     void evaluate(std::size_t n, const double* rho, const double* e, double* p, double* c) const override;
 
     // P and c^2 together (shared work); inlined by evaluate().
@@ -26,6 +27,9 @@ public:
     double minimumPressure() const { return pMin_; }
 
 private:
+    // P before the cut-off, c^2 and g = dP/de|_rho (shared by state() and energyDerivative()).
+    void uncut(double rho, double e, double& p, double& c2, double& g) const;
+
     double c0_ = 0.0, s_ = 0.0, gamma0_ = 0.0;
     Hugoniot hugoniot_ = Hugoniot::cubic;
     bool constantRhoGamma_ = false;

@@ -3,8 +3,8 @@
 //
 //     P = K rho^gamma,    c^2 = gamma K rho^(gamma - 1).
 //
-// Barotropic (an isentrope of the ideal gas when gamma is its ratio of specific heats); P > 0 for
-// every rho > 0, so the reference pressure K rho0^gamma is not zero.
+// Barotropic, g = dP/de|_rho = 0 (an isentrope of the ideal gas when gamma is its ratio of specific
+// heats); P > 0 for every rho > 0, so the reference pressure K rho0^gamma is not zero.
 #include "materials/equationOfState/Polytropic.hpp"
 
 #include <cmath>
@@ -44,6 +44,10 @@ double Polytropic::pressure(double rho, double) const {
 
 double Polytropic::soundSpeedSquared(double rho, double) const {
     return gamma_ * K_ * std::pow(rho, gamma_ - 1.0);
+}
+
+double Polytropic::energyDerivative(double, double) const {
+    return 0.0;
 }
 
 void Polytropic::evaluate(std::size_t n, const double* rho, const double* e, double* p, double* c) const {

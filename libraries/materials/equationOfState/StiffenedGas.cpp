@@ -3,7 +3,7 @@
 //
 //     P = (gamma - 1) rho e - gamma pRef,    c^2 = gamma (P + pRef) / rho.
 //
-// (dP/drho|_e = (gamma - 1) e, dP/de|_rho = (gamma - 1) rho, and (gamma - 1) rho e = P + gamma pRef.)
+// (dP/drho|_e = (gamma - 1) e, g = dP/de|_rho = (gamma - 1) rho, and (gamma - 1) rho e = P + gamma pRef.)
 // pRef = 0 is the ideal gas; water-like liquids take gamma ~ 4.4, pRef ~ 6e8 Pa. c^2 > 0 needs
 // P > -pRef.
 #include "materials/equationOfState/StiffenedGas.hpp"
@@ -42,6 +42,10 @@ double StiffenedGas::pressure(double rho, double e) const {
 
 double StiffenedGas::soundSpeedSquared(double rho, double e) const {
     return gamma_ * (pressure(rho, e) + pRef_) / rho;
+}
+
+double StiffenedGas::energyDerivative(double rho, double) const {
+    return (gamma_ - 1.0) * rho;
 }
 
 void StiffenedGas::evaluate(std::size_t n, const double* rho, const double* e, double* p, double* c) const {

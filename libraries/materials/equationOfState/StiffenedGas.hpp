@@ -11,6 +11,7 @@ public:
 
     double pressure(double rho, double e) const override;
     double soundSpeedSquared(double rho, double e) const override;
+    double energyDerivative(double rho, double e) const override;
     void evaluate(std::size_t n, const double* rho, const double* e, double* p, double* c) const override;
 
     // P and c^2 together (shared work); inlined by evaluate().

@@ -4,8 +4,8 @@
 //     P = B ((rho/rho0)^gamma - 1),    c^2 = (gamma B / rho0) (rho/rho0)^(gamma - 1),
 //
 // with B given, or from the sound speed at rest, B = rho0 c0^2 / gamma (the thesis gives no B).
-// Barotropic: no energy equation. Weakly compressible liquids (gamma = 7 for water); in tension P
-// tends to -B as rho -> 0.
+// Barotropic, g = dP/de|_rho = 0: no energy equation. Weakly compressible liquids (gamma = 7 for
+// water); in tension P tends to -B as rho -> 0.
 #include "materials/equationOfState/Tait.hpp"
 
 #include <cmath>
@@ -63,6 +63,10 @@ double Tait::pressure(double rho, double) const {
 double Tait::soundSpeedSquared(double rho, double) const {
     const double rho0 = referenceDensity();
     return gamma_ * B_ / rho0 * std::pow(rho / rho0, gamma_ - 1.0);
+}
+
+double Tait::energyDerivative(double, double) const {
+    return 0.0;
 }
 
 void Tait::evaluate(std::size_t n, const double* rho, const double* e, double* p, double* c) const {

@@ -11,6 +11,7 @@ public:
 
     double pressure(double rho, double e) const override;
     double soundSpeedSquared(double rho, double e) const override;
+    double energyDerivative(double rho, double e) const override;
     bool needsEnergy() const override { return false; }
     void evaluate(std::size_t n, const double* rho, const double* e, double* p, double* c) const override;
 

@@ -16,14 +16,25 @@
 // x = mu = 0 and both branches reduce to (a + b/omega) rho0 e. Its derivatives jump across these
 // lines.
 //
-// Sound speed: c^2 = dP/drho|_e + (P/rho^2) dP/de|_rho, with both partials analytic per branch
-// (in the blend, dP/de also carries (P_e - P_c)/(Ecv - Eiv)). On a branch line the branch chosen
-// above is used. c^2 may be negative in expanded states (a + b/omega small, the A mu term
-// dominant); it is returned as is and the solver decides.
+// `branch compressed` uses P_c for every rho and e: the "partial Tillotson" of von Nida 2005,
+// Eq. 2.9 (doc/methods/fpm.md section 1), written there for iron and aluminium near rho0 (alpha,
+// beta, Eiv and Ecv are then not used and need not be given). The default, `branch full`, is the
+// three regions above.
+//
+// Derivatives, analytic per branch: on P_c, with omega_e = 1/(E0 eta^2) and e omega_e = omega - 1,
+//
+//     g = dP_c/de|_rho = rho (a + b/omega^2),
+//
+// and on P_e, g = a rho + G (b rho/omega - b rho e omega_e/omega^2) = rho (a + G b/omega^2),
+// G = exp(-alpha x^2); in the blend g also carries (P_e - P_c)/(Ecv - Eiv). Sound speed:
+// c^2 = dP/drho|_e + (P/rho^2) g. On a branch line the branch chosen above is used. c^2 may be
+// negative in expanded states (a + b/omega small, the A mu term dominant); it is returned as is and
+// the solver decides.
 //
 // Range: designed for hypervelocity impact (shock pressures of tens to hundreds of GPa and
 // vaporisation); it has no phase transitions and in cold tension P_c is unbounded below, so
-// `minimumPressure` offers the same cut-off as mieGruneisen (P = max(P, pMin), c^2 uncut).
+// `minimumPressure` offers the same cut-off as mieGruneisen (P = max(P, pMin), c^2 uncut; where P
+// is cut it does not depend on e, and g = 0).
 #include "materials/equationOfState/Tillotson.hpp"
 
 #include <algorithm>
@@ -45,21 +56,30 @@ KeywordSchema Tillotson::keywords() {
         .orEnclosing()
         .scalar("b", "-", "Tillotson constant b")
         .orEnclosing()
-        .scalar("alpha", "-", "decay constant of the expanded branch, exp(-alpha x^2)")
-        .atLeast(0)
-        .orEnclosing()
-        .scalar("beta", "-", "decay constant of the expanded branch, exp(-beta x)")
-        .atLeast(0)
-        .orEnclosing()
         .scalar("E0", "J/kg", "reference specific energy")
         .greaterThan(0)
         .orEnclosing()
-        .scalar("Eiv", "J/kg", "specific energy of incipient vaporisation")
+        .word("branch", {"full", "compressed"},
+              "full: compressed, expanded and blended regions; compressed: P_c everywhere (von Nida 2005 "
+              "Eq. 2.9)")
+        .orDefault("full")
+        .scalar("alpha", "-",
+                "decay constant of the expanded branch, exp(-alpha x^2); required with branch full")
         .atLeast(0)
+        .optional()
         .orEnclosing()
-        .scalar("Ecv", "J/kg", "specific energy of complete vaporisation, > Eiv")
+        .scalar("beta", "-", "decay constant of the expanded branch, exp(-beta x); required with branch full")
+        .atLeast(0)
+        .optional()
         .orEnclosing()
-        .scalar("minimumPressure", "Pa", "tension cut-off pMin: P = max(P, pMin), c^2 uncut")
+        .scalar("Eiv", "J/kg", "specific energy of incipient vaporisation; required with branch full")
+        .atLeast(0)
+        .optional()
+        .orEnclosing()
+        .scalar("Ecv", "J/kg", "specific energy of complete vaporisation, > Eiv; required with branch full")
+        .optional()
+        .orEnclosing()
+        .scalar("minimumPressure", "Pa", "tension cut-off pMin: P = max(P, pMin), c^2 uncut, g = 0 where cut")
         .atMost(0)
         .optional()
         .orEnclosing();
@@ -72,14 +92,26 @@ Tillotson::Tillotson(const Dictionary& dict) : EquationOfState(dict) {
     B_ = v.scalar("B");
     a_ = v.scalar("a");
     b_ = v.scalar("b");
-    alpha_ = v.scalar("alpha");
-    beta_ = v.scalar("beta");
     E0_ = v.scalar("E0");
-    Eiv_ = v.scalar("Eiv");
-    Ecv_ = v.scalar("Ecv");
-    if (!(Ecv_ > Eiv_))
-        throw v.error("Ecv", "expected a real number greater than Eiv = " + formatKeywordNumber(Eiv_) +
-                                 ", found " + formatKeywordNumber(Ecv_));
+    branch_ = v.word("branch") == "full" ? Branch::full : Branch::compressed;
+    if (branch_ == Branch::full) {
+        // Required with the expanded branch only; the schema declares them optional.
+        auto required = [&](const char* key) {
+            if (auto value = v.optionalScalar(key)) return *value;
+            throw InputError(
+                dict.where(), dict.scope(),
+                std::string("missing keyword '") + key +
+                    "' (a real number, required with branch full), looked for in '" + dict.scope() + "'" +
+                    (dict.parent() ? " and in the enclosing '" + dict.parent()->scope() + "'" : ""));
+        };
+        alpha_ = required("alpha");
+        beta_ = required("beta");
+        Eiv_ = required("Eiv");
+        Ecv_ = required("Ecv");
+        if (!(Ecv_ > Eiv_))
+            throw v.error("Ecv", "expected a real number greater than Eiv = " + formatKeywordNumber(Eiv_) +
+                                     ", found " + formatKeywordNumber(Ecv_));
+    }
     if (auto pMin = v.optionalScalar("minimumPressure")) pMin_ = *pMin;
 }
 
@@ -112,9 +144,8 @@ void Tillotson::expanded(double rho, double e, double& p, double& pRho, double& 
     pE = a_ * rho + FE * G;
 }
 
-void Tillotson::state(double rho, double e, double& p, double& c2) const {
-    double pRho, pE;
-    if (rho >= referenceDensity() || e <= Eiv_) {
+void Tillotson::uncut(double rho, double e, double& p, double& pRho, double& pE) const {
+    if (branch_ == Branch::compressed || rho >= referenceDensity() || e <= Eiv_) {
         compressed(rho, e, p, pRho, pE);
     } else if (e >= Ecv_) {
         expanded(rho, e, p, pRho, pE);
@@ -127,6 +158,11 @@ void Tillotson::state(double rho, double e, double& p, double& c2) const {
         pRho = w * peRho + (1.0 - w) * pcRho;
         pE = w * peE + (1.0 - w) * pcE + (pe - pc) / dE;
     }
+}
+
+void Tillotson::state(double rho, double e, double& p, double& c2) const {
+    double pRho, pE;
+    uncut(rho, e, p, pRho, pE);
     c2 = pRho + p * pE / (rho * rho);
     p = std::max(p, pMin_);
 }
@@ -141,6 +177,12 @@ double Tillotson::soundSpeedSquared(double rho, double e) const {
     double p, c2;
     state(rho, e, p, c2);
     return c2;
+}
+
+double Tillotson::energyDerivative(double rho, double e) const {
+    double p, pRho, pE;
+    uncut(rho, e, p, pRho, pE);
+    return p < pMin_ ? 0.0 : pE;
 }
 
 void Tillotson::evaluate(std::size_t n, const double* rho, const double* e, double* p, double* c) const {

@@ -1,6 +1,7 @@
 // The family contract (EquationOfState.hpp) for every registered type, each with a sample
-// parameter set: reference pressure, c^2 > 0 and c^2 = dP/drho|_s, the block form equal to the
-// scalar one, and an error naming each missing required keyword.
+// parameter set: reference pressure, c^2 > 0 and c^2 = dP/drho|_s, g = dP/de|_rho and
+// dP/drho|_e against differences of P, the block form equal to the scalar one, and an error naming
+// each missing required keyword.
 #include "EquationOfStateTestTools.hpp"
 #include "materials/equationOfState/EquationOfState.hpp"
 
@@ -49,6 +50,62 @@ TEST(EquationOfStateContract, SoundSpeedIsPositiveAndIsentropic) {
             const double numeric = test::isentropicDerivative(*eos, rho, e, 1e-4 * rho);
             EXPECT_NEAR(c2, numeric, 1e-6 * std::abs(numeric)) << s.type << " at rho " << rho << ", e " << e;
         }
+    }
+}
+
+// g = energyDerivative against a central difference of P in e, dP/drho|_e = densityDerivative
+// against one in rho, and the identity c^2 = dP/drho|_e + P g / rho^2.
+TEST(EquationOfStateContract, PartialDerivativesMatchDifferencesOfPressure) {
+    for (const auto& s : eosSamples()) {
+        const auto eos = makeEos(dictionaryText(s));
+        for (const auto& [rho, e] : s.states) {
+            const double p = eos->pressure(rho, e), c2 = eos->soundSpeedSquared(rho, e);
+            const double g = eos->energyDerivative(rho, e), pRho = eos->densityDerivative(rho, e);
+            if (!eos->needsEnergy()) {
+                EXPECT_EQ(g, 0.0) << s.type;
+            }
+            // Step in e: 1e-4 of |e| or, at e = 0, of c^2 (an energy per mass of the state's scale).
+            // Truncation (h/e)^2 e^2 P_eee / P_e ~ 1e-8 (P is linear in e except for tillotson's
+            // omega, whose scale is E0 >= e), plus the round-off bound: 1e-6 leaves room for both.
+            const double hE = 1e-4 * std::max(std::abs(e), c2);
+            const auto dE = test::energyDifference(*eos, rho, e, hE);
+            EXPECT_NEAR(g, dE.value, 1e-6 * std::abs(dE.value) + dE.roundOff)
+                << s.type << " at rho " << rho << ", e " << e;
+            // Step in rho 1e-4 rho, as for the isentropic derivative.
+            const auto dRho = test::densityDifference(*eos, rho, e, 1e-4 * rho);
+            EXPECT_NEAR(pRho, dRho.value, 1e-6 * std::abs(dRho.value) + dRho.roundOff)
+                << s.type << " at rho " << rho << ", e " << e;
+            // The identity: densityDerivative is c^2 - P g / rho^2, so this is the round-off of one
+            // subtraction and one addition on numbers of size c^2 and |P g| / rho^2.
+            const double pg = p * g / (rho * rho);
+            EXPECT_NEAR(pRho + pg, c2, 4e-16 * (std::abs(c2) + std::abs(pg)))
+                << s.type << " at rho " << rho << ", e " << e;
+        }
+    }
+}
+
+// Where a tension cut-off holds P at pMin, P does not depend on e: g = 0 there, and
+// densityDerivative is the uncut c^2 (EquationOfState.hpp).
+TEST(EquationOfStateContract, EnergyDerivativeIsZeroWherePressureIsCut) {
+    const std::string al2 = "type mieGruneisen; rho0 2785; c0 5330; s 1.338; gamma0 2; ";
+    const std::string tillotson =
+        "type tillotson; rho0 2700; A 75.2e9; B 65e9; a 0.5; b 1.63; alpha 5; beta 5; E0 5e6; Eiv 3e6; "
+        "Ecv 13.9e6; ";
+    for (const std::string& model : {al2, tillotson}) {
+        const auto cut = makeEos(model + "minimumPressure -1e9;");
+        const auto uncut = makeEos(model);
+        // Cold tension of 10%: P_uncut ~ -7e9 Pa, well below the cut-off.
+        const double rho = 0.9 * cut->referenceDensity(), e = 1e4;
+        ASSERT_LT(uncut->pressure(rho, e), -1e9);
+        EXPECT_EQ(cut->pressure(rho, e), -1e9);
+        EXPECT_EQ(cut->energyDerivative(rho, e), 0.0) << model;
+        EXPECT_EQ(test::energyDifference(*cut, rho, e, 1e2).value, 0.0) << model;
+        EXPECT_EQ(cut->soundSpeedSquared(rho, e), uncut->soundSpeedSquared(rho, e)) << model;
+        EXPECT_EQ(cut->densityDerivative(rho, e), uncut->soundSpeedSquared(rho, e)) << model;
+        EXPECT_GT(uncut->energyDerivative(rho, e), 0.0) << model;
+        // In compression the cut-off changes nothing.
+        const double rhoC = 1.1 * cut->referenceDensity();
+        EXPECT_EQ(cut->energyDerivative(rhoC, e), uncut->energyDerivative(rhoC, e)) << model;
     }
 }
 
