@@ -20,7 +20,7 @@
 // Family contract (checked for every registered type by tests/unit/materials/
 // EquationOfStateContractTest.cpp):
 //   - pressure(referenceDensity(), 0) is the model's reference pressure (0 for all types except
-//     stiffenedGas, -gamma pRef, and polytropic, K rho0^gamma);
+//     stiffenedGas, -gamma pRef, polytropic, K rho0^gamma, and linearEnergy, p0);
 //   - soundSpeedSquared equals the isentropic derivative above, analytically;
 //   - energyDerivative equals dP/de|_rho of pressure(), analytically, and densityDerivative
 //     (from the identity) dP/drho|_e; a barotropic model's g is 0. Where a tension cut-off

@@ -43,6 +43,11 @@ inline std::vector<EosSample> eosSamples() {
                                                                 {2785.0 * 0.97, 1e4},
                                                                 {2785.0 * 1.6, 5e6}};
     return {
+        {"linearEnergy",
+         {{"c", "1480"}, {"g", "1000"}, {"rho0", "1000"}, {"p0", "1e5"}},
+         {"c", "g", "rho0"},
+         1e5,
+         {{1000.0, 0.0}, {1100.0, 1e4}, {950.0, 2e3}}},
         {"linearBarotropic",
          {{"rho0", "1000"}, {"c0", "20"}},
          {"rho0", "c0"},
