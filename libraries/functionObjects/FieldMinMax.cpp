@@ -10,8 +10,15 @@
 // Mises stress sqrt(3/2 s:s) of `cauchyStress` with its out-of-plane `cauchyStressZZ` below 3D
 // (the material point method's fields; VonMisesStress.hpp), computed at each write:
 //     vonMises { type fieldMinMax; fields (vonMisesStress); }
+//
+// Derived fields: `maxPrincipalStress` and `minPrincipalStress`, when the run has no field of that
+// name, are the largest and smallest eigenvalue of the Cauchy stress sigma = S - p I of
+// `deviatoricStress` and `pressure` (the finite pointset method's fields; below 3D the deviator is
+// in-plane and sigma_zz = -p: PrincipalStress.hpp), computed at each write:
+//     principal { type fieldMinMax; fields (maxPrincipalStress minPrincipalStress); }
 #include "functionObjects/FieldMinMax.hpp"
 
+#include "functionObjects/PrincipalStress.hpp"
 #include "functionObjects/VonMisesStress.hpp"
 
 #include "core/Parallel.hpp"
@@ -24,7 +31,9 @@ namespace mfdyn {
 
 KeywordSchema FieldMinMax::keywords() {
     return KeywordSchema("functionObject", "fieldMinMax")
-        .words("fields", "the fields to watch (vonMisesStress: derived from cauchyStress, see the source)")
+        .words("fields",
+               "the fields to watch (vonMisesStress: derived from cauchyStress; maxPrincipalStress, "
+               "minPrincipalStress: from deviatoricStress and pressure; see the source)")
         .word("mode", {"magnitude", "component"}, "min and max of the magnitude, or of each component")
         .orDefault("magnitude")
         .append(functionObjectKeywords());
@@ -42,7 +51,10 @@ FieldMinMax::FieldMinMax(const KeywordValues& values, const std::string& name, c
     for (const auto& field : fields_) {
         if (derived(field)) {
             try {
-                VonMisesField check(context.fields(), "");
+                if (PrincipalStressField::isName(field))
+                    PrincipalStressField check(context.fields(), "", field);
+                else
+                    VonMisesField check(context.fields(), "");
             } catch (const InputError& e) {
                 throw dict.error("fields", e.what());
             }
@@ -62,7 +74,8 @@ FieldMinMax::FieldMinMax(const KeywordValues& values, const std::string& name, c
 }
 
 bool FieldMinMax::derived(const std::string& field) const {
-    return field == VonMisesField::name && !context().fields().findField(field);
+    return (field == VonMisesField::name || PrincipalStressField::isName(field)) &&
+           !context().fields().findField(field);
 }
 
 void FieldMinMax::write() {
@@ -72,16 +85,27 @@ void FieldMinMax::write() {
     for (const auto& name : fields_) {
         const bool isDerived = derived(name);
         std::optional<VonMisesField> vonMises;
-        if (isDerived) vonMises.emplace(store, "fieldMinMax '" + this->name() + "'");
-        const FieldBase& f = isDerived ? store.field("cauchyStress") : store.field(name);
-        const int nc = isDerived ? 1 : f.components();
+        std::optional<PrincipalStressField> principal;
+        const bool largest = name == PrincipalStressField::maxName;
+        const FieldBase* f = nullptr;
+        if (!isDerived)
+            f = &store.field(name);
+        else if (PrincipalStressField::isName(name))
+            principal.emplace(store, "fieldMinMax '" + this->name() + "'", name);
+        else
+            vonMises.emplace(store, "fieldMinMax '" + this->name() + "'");
+        const int nc = isDerived ? 1 : f->components();
         const int parts = components_ ? nc : 1;
         for (int p = 0; p < parts; ++p) {
             auto value = [&](std::size_t i) {
-                if (isDerived) return (*vonMises)(i);
-                if (components_ || nc == 1) return f.component(i, components_ ? p : 0);
+                if (vonMises) return (*vonMises)(i);
+                if (principal) {
+                    const PrincipalStresses s = (*principal)(i);
+                    return largest ? s.max : s.min;
+                }
+                if (components_ || nc == 1) return f->component(i, components_ ? p : 0);
                 double s = 0;
-                for (int c = 0; c < nc; ++c) s += f.component(i, c) * f.component(i, c);
+                for (int c = 0; c < nc; ++c) s += f->component(i, c) * f->component(i, c);
                 return std::sqrt(s);
             };
             // Sequential on purpose: ties resolve to the lowest index whatever the thread count.
