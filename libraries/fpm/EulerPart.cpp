@@ -3,6 +3,7 @@
 
 #include "core/Parallel.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 
@@ -16,6 +17,27 @@ typename LeastSquaresOperators<Dim>::Options shiftedOptions(typename LeastSquare
     o.fallback = LeastSquaresOperators<Dim>::Fallback::none;
     o.onFailure = LeastSquaresOperators<Dim>::OnFailure::flag;  // a failed shifted fit: central
     return o;
+}
+
+// The minimisation direction of (5.25)-(5.27): with E = tr(epsdot) I - epsdot (the 3D form of
+// the note; in 2D the same expression gives E = [[e22, -e21], [-e21, e11]]), a unit s with
+// s^T E s = 0 where E's extreme eigenvalues l1 < 0 < l3 (s = sqrt(l3/(l3 - l1)) e1 + sqrt(-l1/(l3 - l1)) e3),
+// else the eigenvector of the eigenvalue of least magnitude.
+template <int Dim>
+Vector<Dim> minimisationDirection(const Tensor<Dim>& gradV) {
+    const Tensor<Dim> epsdot = 0.5 * (gradV + gradV.transpose());
+    const Tensor<Dim> E = epsdot.trace() * Tensor<Dim>::Identity() - epsdot;
+    Eigen::SelfAdjointEigenSolver<Tensor<Dim>> eigen(E);
+    const auto& l = eigen.eigenvalues();  // ascending
+    const auto& e = eigen.eigenvectors();
+    if (l(0) < 0 && l(Dim - 1) > 0) {
+        const double span = l(Dim - 1) - l(0);
+        return std::sqrt(l(Dim - 1) / span) * e.col(0) + std::sqrt(-l(0) / span) * e.col(Dim - 1);
+    }
+    int k = 0;
+    for (int j = 1; j < Dim; ++j)
+        if (std::abs(l(j)) < std::abs(l(k))) k = j;
+    return e.col(k);
 }
 
 }  // namespace
@@ -47,11 +69,12 @@ void EulerPart<Dim>::upwind(const std::vector<Vector<Dim>>& x, const NeighbourLi
     std::vector<std::size_t> active, slot(n, 0);
     for (std::size_t i = 0; i < n; ++i) {
         const double g = gradP[i].norm();
-        if (!shifts(g, p[i], h)) {
+        if (upwind_.direction == UpwindDirection::central || !shifts(g, p[i], h)) {
             flat[i] = 1;
             continue;
         }
-        dir[i] = gradP[i] / g;
+        dir[i] = upwind_.direction == UpwindDirection::gradient ? Vector<Dim>(gradP[i] / g)
+                                                                : minimisationDirection<Dim>(gradV[i]);
         r.shift[i] =
             std::min(upwind_.deltaIsTime ? upwind_.delta * c[i] : upwind_.delta * h, upwind_.maxShift * h);
         slot[i] = active.size();

@@ -29,7 +29,15 @@
 
 namespace mfdyn::fpm {
 
+// The upwind direction n (§3.2): along grad p (the thesis's, its only stable choice), or its failing
+// alternatives kept as negative controls (§4.1, R9 of §4b): `minimisation`, the direction s that
+// minimises |s^T E s| with E = tr(epsdot) I - epsdot (5.25)-(5.27) (a zero of the form where E has
+// eigenvalues of both signs, else the eigenvector of the eigenvalue of least magnitude), and
+// `central`, no upwinding at all (every particle evaluated centrally).
+enum class UpwindDirection { gradient, minimisation, central };
+
 struct UpwindOptions {
+    UpwindDirection direction = UpwindDirection::gradient;
     bool deltaIsTime = true;       // l = delta c; else l = delta h
     double delta = 0.3;            // s (deltaIsTime) or - (a fraction of h)
     double maxShift = 0.5;         // l <= maxShift h

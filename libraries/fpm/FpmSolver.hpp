@@ -1,17 +1,23 @@
 #pragma once
 // fpmSolid: the finite pointset method for hypo-elastic solids (von Nida 2005; doc/methods/fpm.md).
 // What is built, the step, constant/fpmProperties and the fields: the opening comment of FpmSolver.cpp.
+#include "boundaryConditions/BoundaryConditionList.hpp"
 #include "core/KeywordSchema.hpp"
 #include "fpm/EulerPart.hpp"
+#include "fpm/LinearFlowReference.hpp"
+#include "fpm/ShearPart.hpp"
+#include "fpm/splitting/Splitting.hpp"
 #include "geometry/Shape.hpp"
 #include "materials/MaterialSet.hpp"
 #include "meshfreeOperators/LeastSquaresOperators.hpp"
+#include "meshfreeOperators/SurfaceDetection.hpp"
 #include "meshfreeOperators/fitWeights/FitWeight.hpp"
 #include "particles/NeighbourSearch.hpp"
 #include "solver/Solver.hpp"
 
 #include <array>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace mfdyn {
@@ -26,6 +32,9 @@ public:
     static KeywordSchema motionKeywords();
     static KeywordSchema initialStressKeywords();
     static KeywordSchema eulerKeywords();
+    static KeywordSchema shearKeywords();
+    static KeywordSchema freeSurfaceKeywords();
+    static KeywordSchema instabilityKeywords();
     static constexpr const char* propertiesDictionary = "fpmProperties";
 
     TimeStepVote stableTimeStep() override;
@@ -33,6 +42,10 @@ public:
     ParticleSetBase& particles() override { return *owner_; }
     std::vector<ExtraFile> extraOutput() const override;
     std::vector<std::string> summary(double loopSeconds) const override;
+    // sum m e where e is evolved (the work of both parts, sigma : grad v / rho), else the elastic
+    // energy sum V (S : S / (4 mu) + p^2 / (2 K)), K = rho c^2 of the step's start, where the
+    // shear or Euler part runs; none for the rotation part alone.
+    std::optional<double> internalEnergy() const override;
 
     // The rotation-only reference (see the top of this file), measured after each step.
     struct RotationError {
@@ -50,8 +63,22 @@ private:
     SymmTensor<Dim> initialStressAt(const Vector<Dim>& X) const;
     Vector<Dim> prescribedVelocity(const Vector<Dim>& x) const;
     void measureRotationError(double t);
+    void readFlowReference();
+    void measureFlowError(double t);
     void readEuler();
-    void eulerStep(double dt);
+    void readShear();
+    // The stages of the split (fpm/splitting): each advances the state by its fraction of the step
+    // on this step's fit and adds its share of the particles' velocity to motionVelocity_.
+    void shearStage(double dt, double fraction);
+    void eulerStage(double dt, double fraction);
+    void rotationStage(double dt);
+    // The rows of the shifted fits, within (1 + maxShift) h: searched once per step, when a part
+    // first needs them.
+    const NeighbourList& shiftedRows();
+    void readFreeSurface();
+    // The free-surface conditions on the particles detected this step: p = p_o, and with the shear
+    // part S n = 0 (S <- P S P - tr(P S P)/(d - 1) P, P = I - n n^T), so that sigma n = -p_o n.
+    void applyFreeSurface();
 
     std::unique_ptr<ParticleSet<Dim>> owner_;
     const Dictionary& properties_;
@@ -62,16 +89,20 @@ private:
     SymmTensor<Dim> stress0_{};
     bool hasInitialStress_ = false;
 
-    bool prescribed_ = false;    // motion: prescribed rigid rotation, else frozen
-    bool upwindMotion_ = false;  // motion: the Euler part's upwind velocity
+    bool prescribed_ = false;         // motion: prescribed rigid rotation, else frozen
+    bool upwindMotion_ = false;       // motion: the Euler part's upwind velocity
+    bool dimensionalMotion_ = false;  // motion: the shear part's v_D (+ the Euler part's correction)
     double omega_ = 0;
     Vector<3> axis_ = Vector<3>::UnitZ();
     Vector<Dim> centre_ = Vector<Dim>::Zero();
 
     double spacing_ = 0;
     double h_ = 0;
-    bool reference_ = false;                 // the rotation-only reference applies
-    bool euler_ = false, rotation_ = false;  // the subsystems that run
+    bool reference_ = false;                                 // the rotation-only reference applies
+    bool euler_ = false, rotation_ = false, shear_ = false;  // the subsystems that run
+    std::vector<fpm::Subsystem> parts_;                      // in the thesis's order
+    std::unique_ptr<fpm::Splitting> splitting_;
+    bool literalSoundSpeed_ = false;  // the Euler part's c^2 = dp/drho|e (else the isentropic one)
 
     // The Euler part (fpm/EulerPart.hpp): null unless subsystems has euler.
     std::unique_ptr<fpm::EulerPart<Dim>> eulerPart_;
@@ -86,6 +117,40 @@ private:
     std::vector<double> rhoStart_, pStart_;
     std::vector<Vector<Dim>> vStart_;
     StateChange lastChange_, worstChange_;
+
+    // The shear part (fpm/ShearPart.hpp): null unless subsystems has shear.
+    std::unique_ptr<fpm::ShearPart<Dim>> shearPart_;
+    std::vector<double> mu_, g_;         // shear modulus and dp/de|rho per particle
+    double deviatorWeight_ = 1.0 / Dim;  // alpha of S's rate (the materials' strength laws)
+    bool plastic_ = false;               // a material's strength law yields
+    std::vector<double>* plasticStrain_ = nullptr;
+    std::size_t shearTooFew_ = 0, unstrained_ = 0, shortened_ = 0;  // central or shortened, shear part
+    double maxShearShift_ = 0;
+
+    // The academic validations' exact uniform state (fpm/LinearFlowReference.hpp), with `reference`.
+    std::unique_ptr<fpm::LinearFlowReference<Dim>> flowReference_;
+    fpm::UniformState<Dim> flowState_;
+    double flowTime_ = 0;
+    struct FlowError {
+        double rho = 0, p = 0,
+               S = 0;  // max over particles of |rho - rho_ex|, |p - p_ex|, max_k |S_k - S_ex,k|
+    };
+    FlowError flowError_, flowRelative_, worstFlowRelative_;  // absolute now; relative now; relative, worst
+
+    // constant/boundaryConditions (the shared family): velocity conditions after every stage that
+    // changes v, position conditions after the motion.
+    BoundaryConditionList<Dim> boundaryConditions_;
+    // freeSurface { pressure p_o; }: detected every step (meshfreeOperators/SurfaceDetection).
+    std::unique_ptr<SurfaceDetection<Dim>> surface_;
+    double outerPressure_ = 0;
+    // instabilityCheck { pressure (lo hi); stress s; }: a state outside is stopped as an instability.
+    bool checkPressure_ = false;
+    double pressureLow_ = 0, pressureHigh_ = 0, stressBound_ = 0;
+    std::size_t surfaceParticles_ = 0;  // detected, summed over the steps
+
+    std::vector<Vector<Dim>> motionVelocity_;  // x <- x + dt motionVelocity_ (upwind, dimensional)
+    std::vector<double> divergence_;           // the step's div v for V (the Euler part's div v_uw)
+    bool wideBuilt_ = false;
 
     std::vector<Vector<Dim>>& x_;
     std::vector<Vector<Dim>>& v_;

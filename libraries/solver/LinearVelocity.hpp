@@ -9,6 +9,8 @@ class LinearVelocity final : public InitialState<Dim> {
 public:
     explicit LinearVelocity(const Dictionary& dict);
     Vector<Dim> velocity(const Vector<Dim>& X) const override;
+    // G = dv/dX (for exact references of linear flows, e.g. fpmSolid's reference linearFlow).
+    const Tensor<Dim>& gradient() const { return gradient_; }
 
 private:
     Vector<Dim> v0_;

@@ -1,5 +1,5 @@
-# Bad fpmProperties from a case directory: an unknown keyword, an unknown subsystem, a subsystem
-# not built yet (shear) and the Euler part's conditions (frozen particles, an equation of state, one
+# Bad fpmProperties from a case directory: an unknown keyword, an unknown subsystem or splitting,
+# the shear part's conditions and the Euler part's conditions (frozen particles, an equation of state, one
 # delta) are each an input error at their line (file:line, the valid choices),
 # exit status 1, the particles untouched and no time directory written.
 source "$(dirname "$0")/common.sh"
@@ -36,8 +36,16 @@ refused eulerNoMaterials "^subsystems" "the Euler part needs constant/materialPr
     sed -i 's/^subsystems .*/subsystems (euler rotation);/; s/^motion .*/motion { velocity frozen; }/' constant/fpmProperties
 refused eulerBothDeltas "^euler" "give delta (a time) or deltaFraction (of h), not both" \
     sh -c "sed -i 's/^subsystems .*/subsystems (euler);/; s/^motion .*/motion { velocity frozen; }/' constant/fpmProperties && echo 'euler { delta 0.3; deltaFraction 0.2; }' >> constant/fpmProperties"
-refused shearNotBuilt "^subsystems" "the shear part is not built yet" \
+refused shearPrescribed "^motion" "the shear part evolves v: it runs on frozen particles" \
     sed -i 's/^subsystems .*/subsystems (shear rotation);/' constant/fpmProperties
+refused shearNoMaterials "^subsystems" "the shear part needs constant/materialProperties with a strength law" \
+    sed -i 's/^subsystems .*/subsystems (shear rotation);/; s/^motion .*/motion { velocity frozen; }/' constant/fpmProperties
+refused dimensionalWithoutShear "^motion" "velocity dimensional is the shear part's: subsystems with shear" \
+    sed -i 's/^motion .*/motion { velocity dimensional; }/' constant/fpmProperties
+refused unknownSplitting "^splitting" "unknown splitting (fpmSolid) type 'lei'; did you mean 'lie'" \
+    sh -c "echo 'splitting { type lei; }' >> constant/fpmProperties"
+refused shearBothDeltas "^shear" "give delta (a time) or deltaFraction (of h), not both" \
+    sh -c "sed -i 's/^subsystems .*/subsystems (shear);/; s/^motion .*/motion { velocity frozen; }/' constant/fpmProperties && echo 'shear { delta 0.3; deltaFraction 0.2; }' >> constant/fpmProperties"
 refused unknownMotion "velocity rotating" "expected one of prescribed | frozen" \
     sed -i 's/velocity prescribed;/velocity rotating;/' constant/fpmProperties
 refused badOrder "^order" "expected a value" \

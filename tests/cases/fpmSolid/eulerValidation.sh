@@ -62,7 +62,7 @@ sed -i 's/^smoothingLength .*/smoothingLength 4;/' "$b/constant/fpmProperties"
 run "$b" particleGen
 rc=0; fpmSolid -case "$b" > "$b/log.fpmSolid" 2>&1 || rc=$?
 [ "$rc" = 1 ] || fail "bracket: exit status $rc, expected 1"
-grep -q "phase euler, step 1, t = 0: particle [0-9]* (material gas): the bracket rho c^2 .* not positive (rho 1, c^2 0 .*Remedy" "$b/log.fpmSolid" ||
+grep -q "phase euler, step 1, t = 0: particle [0-9]* (material gas): the bracket rho c^2 + g p / rho .* not positive (rho 1, p 2, c^2 0 .*Remedy" "$b/log.fpmSolid" ||
     fail "bracket: $(grep -m1 Error "$b/log.fpmSolid")"
 echo "bracket: $(grep -m1 -o 'phase euler.\{0,100\}' "$b/log.fpmSolid")"
 echo "PASS: R6 Euler validation, frozen mode, and R6L, the Lagrangian mode, to 5 s"

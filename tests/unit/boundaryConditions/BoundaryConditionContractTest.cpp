@@ -24,6 +24,7 @@ const std::map<std::string, std::string> minimalBody{
     {"mirrorPlane", "SHAPE point (0 0 0); normal (1 0 0);"},
     {"skewSymmetricPlane", "SHAPE point (0.1 0 0); normal (1 0 0);"},
     {"prescribedTraction", "SHAPE traction (1 0 0); area 2;"},
+    {"linearVelocity", "SHAPE gradient (2 0 0 0 0 0 0 0 0); velocity (1 0 0);"},
 };
 
 template <int Dim>
