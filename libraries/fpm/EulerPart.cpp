@@ -12,10 +12,12 @@ namespace mfdyn::fpm {
 namespace {
 
 template <int Dim>
-typename LeastSquaresOperators<Dim>::Options shiftedOptions(typename LeastSquaresOperators<Dim>::Options o) {
+typename LeastSquaresOperators<Dim>::Options shiftedOptions(typename LeastSquaresOperators<Dim>::Options o,
+                                                            double minReciprocalCondition) {
     o.form = LeastSquaresOperators<Dim>::Form::value;  // the fit evaluated away from the particle
     o.fallback = LeastSquaresOperators<Dim>::Fallback::none;
     o.onFailure = LeastSquaresOperators<Dim>::OnFailure::flag;  // a failed shifted fit: central
+    o.minReciprocalCondition = std::max(o.minReciprocalCondition, minReciprocalCondition);
     return o;
 }
 
@@ -44,7 +46,7 @@ Vector<Dim> minimisationDirection(const Tensor<Dim>& gradV) {
 
 template <int Dim>
 EulerPart<Dim>::EulerPart(typename LeastSquaresOperators<Dim>::Options fit, UpwindOptions upwind)
-    : upwind_(upwind), shifted_(shiftedOptions<Dim>(fit)) {}
+    : upwind_(upwind), shifted_(shiftedOptions<Dim>(fit, upwind.shiftedFitCondition)) {}
 
 template <int Dim>
 void EulerPart<Dim>::upwind(const std::vector<Vector<Dim>>& x, const NeighbourList& rows, double h,

@@ -43,6 +43,12 @@ struct UpwindOptions {
     double maxShift = 0.5;         // l <= maxShift h
     double gradientFloor = 1e-10;  // |grad p| h <= floor (|p| + pScale): central
     double pScale = 0;             // the pressure scale added to |p| in the floor
+    // The shifted fits' least reciprocal condition lambda_min / lambda_max of the scaled moment
+    // matrix: a shifted point beyond a free surface sees nearly one plane of particles, a fit whose
+    // normal gradient is ill-determined (1e-9 passes the central fit's 1e-10 and gave a surface
+    // particle v_z = -23 in one step of the coupled shearing sphere); below it the fit fails (then
+    // shortened or central). The note's [R] asks cond(M) < 1e8; 1e-6 is what the sphere needs.
+    double shiftedFitCondition = 1e-6;
 };
 
 template <int Dim>

@@ -168,6 +168,10 @@ KeywordSchema FpmSolver<Dim>::freeSurfaceKeywords() {
               "the surface normal estimator (meshfreeOperators/SurfaceDetection.hpp; centreOfMass is the "
               "thesis's zeroth-order normal)")
         .orDefault("smoothedCovariance")
+        .flag(
+            "traction",
+            "with the shear part, also S n = 0 on the surface particles (sigma n = -p_o n); no: p = p_o only")
+        .orDefault(true)
         .scalar("offsetThreshold", "-", "the centre-of-mass offset above which a particle is a candidate")
         .atLeast(0)
         .lessThan(1)
@@ -263,6 +267,13 @@ KeywordSchema FpmSolver<Dim>::keywords() {
         .scalar("spacing", "m", "the particle spacing (default: the largest V^(1/d))")
         .greaterThan(0)
         .optional()
+        .scalar("shiftedFitCondition", "-",
+                "the upwind parts' shifted fits fail below this reciprocal condition of their moment matrix "
+                "(a point "
+                "beyond a free surface sees one plane of particles: then the shift is shortened, or central)")
+        .greaterThan(0)
+        .lessThan(1)
+        .orDefault(1e-6)
         .dictionary(
             "euler",
             "the Euler part's upwinding: delta (a time) or deltaFraction (of h), maxShift, soundSpeed")
@@ -495,6 +506,7 @@ void FpmSolver<Dim>::readEuler() {
                            : direction == "central"    ? fpm::UpwindDirection::central
                                                        : fpm::UpwindDirection::gradient;
     }
+    upwind.shiftedFitCondition = settings_.scalar("shiftedFitCondition");
     eulerPart_ = std::make_unique<fpm::EulerPart<Dim>>(fitOptions<Dim>(settings_), upwind);
 }
 
@@ -535,6 +547,7 @@ void FpmSolver<Dim>::readShear() {
         options.correctedVelocity = e.word("velocity") == "corrected";
         options.central = e.word("scheme") == "central";
     }
+    options.shiftedFitCondition = settings_.scalar("shiftedFitCondition");
     shearPart_ = std::make_unique<fpm::ShearPart<Dim>>(fitOptions<Dim>(settings_), options);
 }
 
@@ -925,6 +938,7 @@ void FpmSolver<Dim>::readFreeSurface() {
     o.scanLength = f.scalar("scanLength");
     surface_ = std::make_unique<SurfaceDetection<Dim>>(o);
     outerPressure_ = f.scalar("pressure");
+    surfaceTraction_ = f.flag("traction");
     if (!euler_ && !shear_)
         throw properties_.error("freeSurface",
                                 "freeSurface conditions act on p and S: subsystems with euler or shear");
@@ -936,7 +950,7 @@ void FpmSolver<Dim>::applyFreeSurface() {
     const auto& normal = surface_->normal();
     std::vector<double>& p = *p_;
     std::vector<SymmTensor<Dim>>& S = *S_;
-    const bool projectStress = shear_;
+    const bool projectStress = shear_ && surfaceTraction_;
     parallelFor(x_.size(), [&](std::size_t i) {
         if (!flag[i]) return;
         p[i] = outerPressure_;

@@ -143,6 +143,7 @@ private:
     // freeSurface { pressure p_o; }: detected every step (meshfreeOperators/SurfaceDetection).
     std::unique_ptr<SurfaceDetection<Dim>> surface_;
     double outerPressure_ = 0;
+    bool surfaceTraction_ = true;
     // instabilityCheck { pressure (lo hi); stress s; }: a state outside is stopped as an instability.
     bool checkPressure_ = false;
     double pressureLow_ = 0, pressureHigh_ = 0, stressBound_ = 0;

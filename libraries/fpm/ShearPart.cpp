@@ -11,10 +11,12 @@ namespace mfdyn::fpm {
 namespace {
 
 template <int Dim>
-typename LeastSquaresOperators<Dim>::Options shiftedOptions(typename LeastSquaresOperators<Dim>::Options o) {
+typename LeastSquaresOperators<Dim>::Options shiftedOptions(typename LeastSquaresOperators<Dim>::Options o,
+                                                            double minReciprocalCondition) {
     o.form = LeastSquaresOperators<Dim>::Form::value;  // the fit evaluated away from the particle
     o.fallback = LeastSquaresOperators<Dim>::Fallback::none;
     o.onFailure = LeastSquaresOperators<Dim>::OnFailure::flag;  // a failed shifted fit: central
+    o.minReciprocalCondition = std::max(o.minReciprocalCondition, minReciprocalCondition);
     return o;
 }
 
@@ -29,7 +31,7 @@ std::vector<double> component(const std::vector<SymmTensor<Dim>>& S, int k) {
 
 template <int Dim>
 ShearPart<Dim>::ShearPart(typename LeastSquaresOperators<Dim>::Options fit, ShearOptions shear)
-    : shear_(shear), shifted_(shiftedOptions<Dim>(fit)) {}
+    : shear_(shear), shifted_(shiftedOptions<Dim>(fit, shear.shiftedFitCondition)) {}
 
 template <int Dim>
 std::vector<Vector<Dim>> ShearPart<Dim>::divergence(const LeastSquaresOperators<Dim>& fit,

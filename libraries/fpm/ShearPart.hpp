@@ -51,6 +51,12 @@ struct ShearOptions {
     bool literalSoundSpeed = true;   // (5.48) with sigma0 = S0 - p0 I (else S0 only)
     int shortenings = 3;             // a failed shifted fit: retried with l/2, l/4, ... this often
     bool central = false;            // no upwinding (the thesis's failing central scheme, R9)
+    // The shifted fits' least reciprocal condition lambda_min / lambda_max of the scaled moment
+    // matrix: a shifted point beyond a free surface sees nearly one plane of particles, a fit whose
+    // normal gradient is ill-determined (1e-9 passes the central fit's 1e-10 and gave a surface
+    // particle v_z = -23 in one step of the coupled shearing sphere); below it the fit fails (then
+    // shortened or central). The note's [R] asks cond(M) < 1e8; 1e-6 is what the sphere needs.
+    double shiftedFitCondition = 1e-6;
 };
 
 template <int Dim>

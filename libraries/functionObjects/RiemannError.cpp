@@ -16,6 +16,12 @@
 //         right { density 0.125; velocity 0; pressure 0.1; equationOfState { type idealGas; gamma 1.4; } }
 //     }
 //
+// In 2D and 3D the tube lies along x: the x components of position and velocity are compared, every
+// particle of the cross-section counting (the finite pointset method's 3D tube, doc/methods/fpm.md
+// §4.1). Where the right wave is a shock, shock.csv has its position: the largest x of a particle
+// with p above the mean of the star and right pressures, beside the exact one (the summary's
+// reference value shockPosition).
+//
 // equationOfState types: idealGas (gamma), stiffenedGas (gamma, pRef), linearBarotropic (rho0, c0).
 #include "functionObjects/RiemannError.hpp"
 
@@ -24,6 +30,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace mfdyn {
 
@@ -106,9 +113,6 @@ RiemannError::RiemannError(const KeywordValues& values, const std::string& name,
       fields_(values.words("fields")),
       norms_(outputFile("errorNorms.csv"), name, startTime()) {
     const Dictionary& dict = values.dict();
-    if (context.dimension() != 1)
-        throw dict.error("type", "riemannError compares 1D runs; this case is " +
-                                     std::to_string(context.dimension()) + "D");
     const Dictionary& left = values.dictionary("left");
     const Dictionary& right = values.dictionary("right");
     const PrimitiveState leftState = readState(left), rightState = readState(right);
@@ -137,6 +141,10 @@ RiemannError::RiemannError(const KeywordValues& values, const std::string& name,
     star_ = std::make_unique<CsvFile>(
         outputFile("starState.csv"),
         std::vector<std::string>{"time", "pStar", "pStarExact", "uStar", "uStarExact"}, startTime());
+    if (exact_->solver().starPressure() > rightState.pressure)  // the right wave is a shock
+        shock_ = std::make_unique<CsvFile>(
+            outputFile("shock.csv"), std::vector<std::string>{"time", "shockPosition", "shockPositionExact"},
+            startTime());
 }
 
 void RiemannError::write() {
@@ -187,6 +195,14 @@ void RiemannError::write() {
     star_->row({context().time().value(), pStar, pExact, uStar, uExact});
     references_.clear();
     if (!ps.empty()) references_ = {{"starPressure", pStar, pExact}, {"starVelocity", uStar, uExact}};
+    if (shock_) {
+        const double level = 0.5 * (pExact + exact_->solver().right().pressure);
+        double front = -std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < n; ++i)
+            if (x[i] >= from_ && x[i] <= to_ && p.component(i, 0) > level) front = std::max(front, x[i]);
+        shock_->row({context().time().value(), front, waves.rightHead});
+        if (std::isfinite(front)) references_.push_back({"shockPosition", front, waves.rightHead});
+    }
 
     // The profile beside the exact one, for plots: profile_<time>.csv, particles in order of x.
     std::vector<std::size_t> order(n);
@@ -216,6 +232,7 @@ void RiemannError::write() {
 }
 
 MFDYN_REGISTER(FunctionObject, RiemannError, "riemannError",
-               "1D run against the exact Riemann solution: L1/L2/Linf of rho, v, P, e and the star state");
+               "a tube along x against the exact Riemann solution: L1/L2/Linf of rho, v, P, e, the star "
+               "state, the shock");
 
 }  // namespace mfdyn

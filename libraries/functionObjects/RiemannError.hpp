@@ -24,6 +24,7 @@ private:
     std::vector<std::string> fields_;
     ErrorNormWriter norms_;
     std::unique_ptr<CsvFile> star_;
+    std::unique_ptr<CsvFile> shock_;  // shock.csv, where the right wave is a shock
     std::vector<std::string> summary_;
     std::vector<ReferenceValue> references_;
 };
