@@ -64,40 +64,55 @@ void EulerPart<Dim>::upwind(const std::vector<Vector<Dim>>& x, const NeighbourLi
     r.shift.assign(n, 0.0);
     r.flat = r.tooFew = 0;
 
-    // n_i and the shift of the m shifted particles (active[j] = i, slot[i] = j); their shifted
-    // points y+ = x - l n (points j < m) and y- = x + l n (points m + j).
+    // n_i and the shift of the shifted particles; a particle whose shifted fits fail (a shifted
+    // point beyond the cloud's edge) is tried again with half the shift, up to `shortenings`
+    // times, then evaluated centrally.
     std::vector<Vector<Dim>> dir(n, Vector<Dim>::Zero());
-    std::vector<char> flat(n, 0);
-    std::vector<std::size_t> active, slot(n, 0);
+    std::vector<std::size_t> active;
     for (std::size_t i = 0; i < n; ++i) {
         const double g = gradP[i].norm();
         if (upwind_.direction == UpwindDirection::central || !shifts(g, p[i], h)) {
-            flat[i] = 1;
+            ++r.flat;
+            r.divV[i] = gradV[i].trace();
+            r.gradP[i] = gradP[i];
             continue;
         }
         dir[i] = upwind_.direction == UpwindDirection::gradient ? Vector<Dim>(gradP[i] / g)
                                                                 : minimisationDirection<Dim>(gradV[i]);
         r.shift[i] =
             std::min(upwind_.deltaIsTime ? upwind_.delta * c[i] : upwind_.delta * h, upwind_.maxShift * h);
-        slot[i] = active.size();
         active.push_back(i);
     }
-    const std::size_t m = active.size();
+    r.shortened = 0;
+    for (int attempt = 0; attempt <= upwind_.shortenings && !active.empty(); ++attempt) {
+        std::vector<std::size_t> failed = evaluate(active, dir, x, rows, h, weight, rho, p, v, c);
+        for (std::size_t i : failed) r.shift[i] *= 0.5;
+        if (attempt > 0) r.shortened += active.size() - failed.size();
+        active = std::move(failed);
+    }
+    for (std::size_t i : active) {
+        ++r.tooFew;
+        r.shift[i] = 0;
+        r.divV[i] = gradV[i].trace();
+        r.gradP[i] = gradP[i];
+    }
+}
+
+template <int Dim>
+std::vector<std::size_t> EulerPart<Dim>::evaluate(const std::vector<std::size_t>& active,
+                                                  const std::vector<Vector<Dim>>& dir,
+                                                  const std::vector<Vector<Dim>>& x, const NeighbourList& rows,
+                                                  double h, const FitWeight& weight, const std::vector<double>& rho,
+                                                  const std::vector<double>& p, const std::vector<Vector<Dim>>& v,
+                                                  const std::vector<double>& c) {
+    EulerUpwind<Dim>& r = result_;
+    const std::size_t n = x.size(), m = active.size();
+    // points y+ = x - l n (j < m) and y- = x + l n (m + j), each with particle i's row
     std::vector<Vector<Dim>> points(2 * m);
     for (std::size_t j = 0; j < m; ++j) {
         const std::size_t i = active[j];
         points[j] = x[i] - r.shift[i] * dir[i];
         points[m + j] = x[i] + r.shift[i] * dir[i];
-    }
-    // rows of the 2m points: particle i's row for both of its points (no shifted fit at all when
-    // every particle is central)
-    if (m == 0) {
-        for (std::size_t i = 0; i < n; ++i) {
-            r.divV[i] = gradV[i].trace();
-            r.gradP[i] = gradP[i];
-        }
-        r.flat = n;
-        return;
     }
     std::vector<std::size_t> offsets(2 * m + 1, 0);
     std::vector<NeighbourList::Index> indices;
@@ -109,8 +124,7 @@ void EulerPart<Dim>::upwind(const std::vector<Vector<Dim>>& x, const NeighbourLi
             offsets[a + 1] = indices.size();
         }
     const NeighbourList shiftedRows(std::move(offsets), std::move(indices));
-    const std::vector<double> hField(2 * m, h);
-    shifted_.rebuild(points, x, shiftedRows, hField, weight);
+    shifted_.rebuild(points, x, shiftedRows, std::vector<double>(2 * m, h), weight);
 
     const std::vector<double> pS = shifted_.valueOf(p);
     const std::vector<Vector<Dim>> gpS = shifted_.gradientOf(p);
@@ -122,17 +136,12 @@ void EulerPart<Dim>::upwind(const std::vector<Vector<Dim>>& x, const NeighbourLi
         vS[std::size_t(k)] = shifted_.valueOf(vk);
     }
     const auto& status = shifted_.status();
-    for (std::size_t i = 0; i < n; ++i) {
-        using Status = typename LeastSquaresOperators<Dim>::Status;
-        const std::size_t a = slot[i], b = m + slot[i];  // y+ and y- of a shifted particle
-        if (!flat[i] && (status[a] != Status::ok || status[b] != Status::ok)) {
-            flat[i] = 2;
-            r.shift[i] = 0;
-        }
-        if (flat[i]) {
-            (flat[i] == 1 ? r.flat : r.tooFew) += 1;
-            r.divV[i] = gradV[i].trace();
-            r.gradP[i] = gradP[i];
+    using Status = typename LeastSquaresOperators<Dim>::Status;
+    std::vector<std::size_t> failed;
+    for (std::size_t j = 0; j < m; ++j) {
+        const std::size_t i = active[j], a = j, b = m + j;  // y+ and y- of the particle
+        if (status[a] != Status::ok || status[b] != Status::ok) {
+            failed.push_back(i);
             continue;
         }
         const Vector<Dim>& nn = dir[i];
@@ -150,6 +159,7 @@ void EulerPart<Dim>::upwind(const std::vector<Vector<Dim>>& x, const NeighbourLi
         r.vUpwind[i] += r.vCorrect[i];
         r.pCorrect[i] = rc * dv;
     }
+    return failed;
 }
 
 template <int Dim>

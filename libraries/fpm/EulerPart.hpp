@@ -16,7 +16,8 @@
 // `motion { velocity upwind; }`; the two corrections are returned for the tests. Central
 // evaluation (the particle's own central gradients, no correction) where |grad p| <= gradientFloor
 // x (|p| + pScale) / h (the corrections vanish there anyway, the note's [R]), or
-// where a shifted fit fails (fewer than 2(d+1) neighbours with a positive weight, or singular):
+// where a shifted fit fails (fewer than 2(d+1) neighbours with a positive weight, or a reciprocal
+// condition below shiftedFitCondition) at l, l/2, l/4 and l/8 (the shortened shifts, counted):
 // both counted. For linear v and p the derivative corrections vanish to round-off (R3 of §4b).
 #include "core/Tensor.hpp"
 #include "meshfreeOperators/LeastSquaresOperators.hpp"
@@ -42,6 +43,7 @@ struct UpwindOptions {
     double delta = 0.3;            // s (deltaIsTime) or - (a fraction of h)
     double maxShift = 0.5;         // l <= maxShift h
     double gradientFloor = 1e-10;  // |grad p| h <= floor (|p| + pScale): central
+    int shortenings = 3;           // a failed shifted fit: retried with l/2, l/4, ... this often
     double pScale = 0;             // the pressure scale added to |p| in the floor
     // The shifted fits' least reciprocal condition lambda_min / lambda_max of the scaled moment
     // matrix: a shifted point beyond a free surface sees nearly one plane of particles, a fit whose
@@ -60,7 +62,8 @@ struct EulerUpwind {
     std::vector<Vector<Dim>> vUpwind;   // v_uw = Pi^c v + vCorrect (central: the particle's v)
     std::vector<double> shift;          // l (0 where central)
     std::size_t flat = 0;               // central: |grad p| ~ 0
-    std::size_t tooFew = 0;             // central: a shifted fit failed
+    std::size_t tooFew = 0;             // central: a shifted fit failed at every shortened shift
+    std::size_t shortened = 0;          // upwinded with a shortened shift
 };
 
 template <int Dim>
@@ -91,6 +94,14 @@ public:
     const UpwindOptions& options() const { return upwind_; }
 
 private:
+    // The upwinded values of the particles `active` at their shifts; returns those whose shifted
+    // fits failed (untouched).
+    std::vector<std::size_t> evaluate(const std::vector<std::size_t>& active, const std::vector<Vector<Dim>>& dir,
+                                      const std::vector<Vector<Dim>>& x, const NeighbourList& rows, double h,
+                                      const FitWeight& weight, const std::vector<double>& rho,
+                                      const std::vector<double>& p, const std::vector<Vector<Dim>>& v,
+                                      const std::vector<double>& c);
+
     UpwindOptions upwind_;
     LeastSquaresOperators<Dim> shifted_;
     EulerUpwind<Dim> result_;

@@ -925,6 +925,7 @@ void FpmSolver<Dim>::eulerStage(double dt, double fraction) {
         for (std::size_t i = 0; i < n; ++i) motionVelocity_[i] += fraction * r.vCorrect[i];
     flat_ += r.flat;
     tooFew_ += r.tooFew;
+    eulerShortened_ += r.shortened;
     for (double l : r.shift) maxShift_ = std::max(maxShift_, l);
 }
 
@@ -1247,8 +1248,8 @@ std::vector<std::string> FpmSolver<Dim>::summary(double) const {
     if (euler_) {
         std::snprintf(line, sizeof line,
                       "euler                central evaluations (particle-steps): %zu with |grad p| ~ 0, %zu "
-                      "with a shifted fit short of neighbours; largest shift %.4g (h %.4g)",
-                      flat_, tooFew_, maxShift_, h_);
+                      "with a shifted fit short of neighbours; %zu with a shortened shift; largest shift %.4g (h %.4g)",
+                      flat_, tooFew_, eulerShortened_, maxShift_, h_);
         lines.push_back(line);
         std::snprintf(
             line, sizeof line,

@@ -109,6 +109,7 @@ private:
     std::vector<double>* e_ = nullptr;   // specificInternalEnergy, when an equation of state needs it
     std::vector<double> c_;              // the sound speed of the step's start
     std::size_t flat_ = 0, tooFew_ = 0;  // central evaluations of the Euler part, summed over the steps
+    std::size_t eulerShortened_ = 0;     // and its shortened shifts
     double maxShift_ = 0;                // the largest shift length taken
     struct StateChange {
         double rho = 0, p = 0,
