@@ -800,6 +800,9 @@ void FpmSolver<Dim>::step(double dt) {
     }
     if (moving) {  // the velocity the stages accumulated (Euler: v_uw or its correction; shear: v_D)
         auto timed = phase("motion");
+        // the velocity conditions hold for the motion too (a slip wall's particles slide along it)
+        if (!boundaryConditions_.empty())
+            boundaryConditions_.constrainVelocity(*owner_, motionVelocity_, time().value() + dt);
         parallelFor(n, [&](std::size_t i) { x_[i] += dt * motionVelocity_[i]; });
         if (!boundaryConditions_.empty()) boundaryConditions_.constrainPosition(*owner_, time().value() + dt);
     }
