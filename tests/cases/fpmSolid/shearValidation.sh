@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# R5 and R5L of doc/methods/fpm.md §4b: the shear validation (§4.6). The shear part alone on the
+# R5 and R5L of doc/methods/fpm.md §4b: the shear validation (§4.6), and von Mises plasticity on it. The shear part alone on the
 # reference sphere, v0 = 0.1 (x2, x1, 0), rho = 1, p = 0, S = 0, mu = 50, g = 0, v = v0(x) on the
 # boundary shell (|x| > 4.4, the thesis's velocity Dirichlet condition), dimensional upwinding with
 # delta 0.3 (l = 0.3 c_S clamped to 0.5 h). Frozen particles (R5): S21 = 0.2 mu t = 50 at t = 5 and
@@ -50,4 +50,26 @@ echo "R5L (Lagrangian): S21(5) exact $s21, S11(5) $s11; relative S error $s, |rh
 awk -v e="$s" 'BEGIN { exit !(e <= 1e-3) }' || fail "R5L: relative stress error $s > 1e-3"
 awk -v a="$rho" 'BEGIN { exit !(a <= 1e-12) }' || fail "R5L: rho changed ($rho): the shear part keeps it"
 grep -q "motion: the shear part's dimensional velocity" "$l/log.fpmSolid" || fail "R5L: the motion is not logged"
-echo "PASS: R5 shear validation, frozen, and R5L, Lagrangian, to 5 s"
+echo "R5 and R5L pass"
+# Von Mises plasticity from the strength family (the thesis's named future work), on the frozen
+# validation: strength vonMises with yieldStress 20 (perfectly plastic). Pure shear has
+# sigma_eq = sqrt(3) |S21|, so S21 = 10 t until t = 2/sqrt(3) = 1.1547 and then the yield value
+# 20/sqrt(3) = 11.5470 (the radial return), every other component 0, plasticStrain > 0.
+y="$WORK/plastic"
+copyTutorial shearValidation "$y"
+coarseSphere "$y" 0.005
+sed -i 's/strength { type hookean; shearModulus 50; }/strength { type vonMises; shearModulus 50; yieldStress 20; }/' "$y/constant/materialProperties"
+grep -q "type vonMises" "$y/constant/materialProperties" || fail "could not set vonMises"
+sed -i '/^reference/d' "$y/constant/fpmProperties"
+run "$y" particleGen
+run "$y" fpmSolid
+for t in 1 5; do
+    read -r lo hi < <(fieldRange "$y" $t deviatoricStress.xy)
+    exact=$(awk -v t=$t 'BEGIN { s = 10 * t; y = 20 / sqrt(3); printf "%.15g", (s < y ? s : y) }')
+    echo "vonMises: S21($t) in [$lo, $hi], exact $exact"
+    awk -v lo="$lo" -v hi="$hi" -v e="$exact" 'BEGIN { exit !((lo - e) / e < 1e-8 && (e - lo) / e < 1e-8 && (hi - e) / e < 1e-8 && (e - hi) / e < 1e-8) }' ||
+        fail "vonMises: S21($t) in [$lo, $hi], expected $exact (1e-8 relative)"
+done
+read -r lo hi < <(fieldRange "$y" 5 plasticStrain)
+awk -v lo="$lo" 'BEGIN { exit !(lo > 0) }' || fail "vonMises: plasticStrain at 5 in [$lo, $hi], expected > 0 everywhere"
+echo "PASS: von Mises, S21 held at the yield value 20/sqrt(3)"
