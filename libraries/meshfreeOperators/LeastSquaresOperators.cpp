@@ -15,43 +15,58 @@ namespace mfdyn {
 
 namespace {
 
-// The largest basis: value form, order 2, 3D: 1 + 3 + 6. Fixed maximum sizes keep the per-point
-// matrices on the stack, so a rebuild allocates nothing inside its parallel loop.
-constexpr int maxBasis = 10;
-using Matrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, maxBasis, maxBasis>;
-using Column = Eigen::Matrix<double, Eigen::Dynamic, 1, 0, maxBasis, 1>;
+// The basis of order Order in Dim dimensions, with the constant term when Offset is 1 (value form):
+// the row p(s) in the layout [1 (value form)] [s_i] [s_i^2 / 2] [s_i s_j, i < j], at most 10 terms
+// (value form, order 2, 3D). Fixed sizes keep the per-point matrices on the stack, so a rebuild
+// allocates nothing inside its parallel loop.
+template <int Dim, int Order, int Offset>
+struct Basis {
+    static constexpr int size = Offset + Dim + (Order == 2 ? Dim * (Dim + 1) / 2 : 0);
+    using Column = Eigen::Matrix<double, size, 1>;
+    using Matrix = Eigen::Matrix<double, size, size>;
 
-// The basis row p(s) in the layout [1 (value form)] [s_i] [s_i^2 / 2] [s_i s_j, i < j].
-template <int Dim>
-void basis(const Vector<Dim>& s, int order, int offset, Column& p) {
-    if (offset) p(0) = 1.0;
-    for (int i = 0; i < Dim; ++i) p(offset + i) = s[i];
-    if (order < 2) return;
-    int q = offset + Dim;
-    for (int i = 0; i < Dim; ++i) p(q++) = 0.5 * s[i] * s[i];
-    for (int i = 0; i < Dim; ++i)
-        for (int j = i + 1; j < Dim; ++j) p(q++) = s[i] * s[j];
-}
-
-// dp/dy_i = factor * dp/ds_i (factor = -1/h for s = (x - y)/h), one column per i.
-template <int Dim>
-void basisDerivative(const Vector<Dim>& s, int order, int offset, int m, double factor,
-                     std::array<Column, Dim>& dp) {
-    for (int i = 0; i < Dim; ++i) {
-        Column& d = dp[i];
-        d.setZero(m);
-        d(offset + i) = factor;
-        if (order < 2) continue;
-        int q = offset + Dim;
-        for (int k = 0; k < Dim; ++k, ++q)
-            if (k == i) d(q) = factor * s[i];  // d(s_i^2 / 2)/ds_i
-        for (int k = 0; k < Dim; ++k)
-            for (int l = k + 1; l < Dim; ++l, ++q) {
-                if (k == i) d(q) += factor * s[l];
-                if (l == i) d(q) += factor * s[k];
-            }
+    static void row(const Vector<Dim>& s, Column& p) {
+        if constexpr (Offset == 1) p(0) = 1.0;
+        for (int i = 0; i < Dim; ++i) p(Offset + i) = s[i];
+        if constexpr (Order == 2) {
+            int q = Offset + Dim;
+            for (int i = 0; i < Dim; ++i) p(q++) = 0.5 * s[i] * s[i];
+            for (int i = 0; i < Dim; ++i)
+                for (int j = i + 1; j < Dim; ++j) p(q++) = s[i] * s[j];
+        }
     }
-}
+
+    // g_i = c . dp/ds_i: the s-gradient of the polynomial c . p(s).
+    static Vector<Dim> gradientDot(const Vector<Dim>& s, const Column& c) {
+        Vector<Dim> g;
+        for (int i = 0; i < Dim; ++i) g[i] = c(Offset + i);
+        if constexpr (Order == 2) {
+            int q = Offset + Dim;
+            for (int i = 0; i < Dim; ++i, ++q) g[i] += c(q) * s[i];  // d(s_i^2 / 2)/ds_i
+            for (int k = 0; k < Dim; ++k)
+                for (int l = k + 1; l < Dim; ++l, ++q) {
+                    g[k] += c(q) * s[l];
+                    g[l] += c(q) * s[k];
+                }
+        }
+        return g;
+    }
+
+    // u += f * dp/ds_i.
+    static void addDerivative(const Vector<Dim>& s, int i, double f, Column& u) {
+        u(Offset + i) += f;
+        if constexpr (Order == 2) {
+            int q = Offset + Dim;
+            u(q + i) += f * s[i];
+            q += Dim;
+            for (int k = 0; k < Dim; ++k)
+                for (int l = k + 1; l < Dim; ++l, ++q) {
+                    if (k == i) u(q) += f * s[l];
+                    if (l == i) u(q) += f * s[k];
+                }
+        }
+    }
+};
 
 }  // namespace
 
@@ -179,14 +194,25 @@ void LeastSquaresOperators<Dim>::shepardPoint(std::size_t a, const std::vector<d
 }
 
 template <int Dim>
+typename LeastSquaresOperators<Dim>::FitFunction LeastSquaresOperators<Dim>::fitFunction() const {
+    const bool valueForm = options_.form == Form::value;
+    if (options_.order == 2)
+        return valueForm ? &LeastSquaresOperators::fitPoint<2, 1> : &LeastSquaresOperators::fitPoint<2, 0>;
+    return valueForm ? &LeastSquaresOperators::fitPoint<1, 1> : &LeastSquaresOperators::fitPoint<1, 0>;
+}
+
+template <int Dim>
+template <int Order, int Offset>
 typename LeastSquaresOperators<Dim>::Status LeastSquaresOperators<Dim>::fitPoint(
     std::size_t a, const Vector<Dim>& y, const std::vector<Vector<Dim>>& x,
     const std::vector<double>& weights, const Vector<Dim>* dWeights, double scale) {
+    using B = Basis<Dim, Order, Offset>;
+    using Matrix = typename B::Matrix;
+    using Column = typename B::Column;
+    constexpr int m = B::size;
+    constexpr bool second = Order == 2;
+    constexpr bool valueForm = Offset == 1;
     const std::size_t k0 = offsets_[a], k1 = offsets_[a + 1];
-    const bool second = options_.order == 2;
-    const bool valueForm = options_.form == Form::value;
-    const int m = basisSize();
-    const int offset = valueForm ? 1 : 0;
     const double invScale = 1.0 / scale;
     double sum = 0.0;
     int used = 0;
@@ -201,15 +227,18 @@ typename LeastSquaresOperators<Dim>::Status LeastSquaresOperators<Dim>::fitPoint
 
     // Normalised weights: phi is unchanged and M is O(1). A common factor of all weights, even one
     // that varies with y, leaves c_0(y) unchanged, so the full derivative may scale dw by the same
-    // 1/sum and leave d(sum)/dy out.
+    // 1/sum and leave d(sum)/dy out. M is symmetric: only its lower triangle is formed (rank-1
+    // updates), the only part the eigenvalue solver and the LDLT factorisation read.
     const double invSum = 1.0 / sum;
-    Matrix M = Matrix::Zero(m, m);
-    Column p(m);
+    Matrix M = Matrix::Zero();
+    Column p;
     for (std::size_t k = k0; k < k1; ++k) {
         const double w = weights[k];
         if (!(w > 0.0)) continue;
-        basis<Dim>(Vector<Dim>((x[indices_[k]] - y) * invScale), options_.order, offset, p);
-        M.noalias() += (w * invSum) * p * p.transpose();
+        B::row(Vector<Dim>((x[indices_[k]] - y) * invScale), p);
+        const Column wp = (w * invSum) * p;
+        for (int j = 0; j < m; ++j)
+            for (int i = j; i < m; ++i) M(i, j) += wp(i) * p(j);
     }
     if (options_.tikhonov > 0.0) M.diagonal().array() += options_.tikhonov * M.trace();
     if (!M.allFinite()) return Status::illConditioned;
@@ -218,60 +247,71 @@ typename LeastSquaresOperators<Dim>::Status LeastSquaresOperators<Dim>::fitPoint
     if (eigen.info() != Eigen::Success || !(lambda(m - 1) > 0.0) ||
         !(lambda(0) >= options_.minReciprocalCondition * lambda(m - 1)))
         return Status::illConditioned;
-    const Eigen::LDLT<Matrix> ldlt(M);
+    const Eigen::LDLT<Matrix, Eigen::Lower> ldlt(M);
 
-    // The full derivative's per-point vectors: a = M^-1 e_0 and v_i = M^-1 (dM/dy_i) a.
+    // The full derivative's per-point vectors: a = M^-1 e_0 and v_i = M^-1 (dM/dy_i) a, dM/dy_i formed
+    // as the old code did (summing (dM/dy_i) a as vectors instead moved shifted, ill-conditioned fits
+    // by 3e-11 relative), dp_b/dy_i = -(1/h) dp/ds_i.
     const bool full = dWeights != nullptr;
-    Column e0 = Column::Zero(m), a0(m);
+    Column a0 = Column::Zero();
     std::array<Column, Dim> v;
-    std::array<Column, Dim> dp;  // dp/dy_i of the current pair
     if (full) {
+        Column e0 = Column::Zero();
         e0(0) = 1.0;
         a0 = ldlt.solve(e0);
         std::array<Matrix, Dim> dM;
-        for (int i = 0; i < Dim; ++i) dM[i] = Matrix::Zero(m, m);
+        for (int i = 0; i < Dim; ++i) dM[i].setZero();
         for (std::size_t k = k0; k < k1; ++k) {
             const double w = weights[k];
             if (!(w > 0.0)) continue;
             const Vector<Dim> s((x[indices_[k]] - y) * invScale);
-            basis<Dim>(s, options_.order, offset, p);
-            basisDerivative<Dim>(s, options_.order, offset, m, -invScale, dp);
+            B::row(s, p);
             for (int i = 0; i < Dim; ++i) {
-                const Column wdp = (w * invSum) * dp[i];
+                Column dp = Column::Zero();
+                B::addDerivative(s, i, -invScale, dp);
+                const Column wdp = (w * invSum) * dp;
                 dM[i].noalias() +=
                     (dWeights[k][i] * invSum) * p * p.transpose() + wdp * p.transpose() + p * wdp.transpose();
             }
         }
         for (int i = 0; i < Dim; ++i) v[i] = ldlt.solve(dM[i] * a0);
     }
+    // M^-1 once per point: phi_b = w_b M^-1 p_b is then one matrix-vector product per pair (the
+    // order-1 full derivative needs no phi beyond a . p_b).
+    const bool needPhi = !full || second;
+    Matrix Minv = Matrix::Zero();
+    if (needPhi) Minv = ldlt.solve(Matrix::Identity());
 
     const double invScale2 = invScale * invScale;
     for (std::size_t k = k0; k < k1; ++k) {
         const double w = weights[k];
         if (!(w > 0.0)) {  // outside the weight's support: this pair carries nothing
             gradient_[k].setZero();
-            if (second) {
+            if constexpr (second) {
                 hessian_[k].setZero();
                 laplacian_[k] = 0.0;
             }
-            if (valueForm) value_[k] = 0.0;
+            if constexpr (valueForm) value_[k] = 0.0;
             continue;
         }
         const Vector<Dim> s((x[indices_[k]] - y) * invScale);
-        basis<Dim>(s, options_.order, offset, p);
-        const Column phi = (w * invSum) * ldlt.solve(p);
-        if (valueForm) value_[k] = phi(0);
+        B::row(s, p);
+        const double ws = w * invSum;
+        Column phi = Column::Zero();
+        if (needPhi) phi.noalias() = ws * (Minv * p);
         if (full) {
-            basisDerivative<Dim>(s, options_.order, offset, m, -invScale, dp);
             const double ap = a0.dot(p);
+            const Vector<Dim> ga = B::gradientDot(s, a0);
+            if constexpr (valueForm) value_[k] = ws * ap;
             for (int i = 0; i < Dim; ++i)
-                gradient_[k][i] = dWeights[k][i] * invSum * ap + (w * invSum) * (a0.dot(dp[i]) - v[i].dot(p));
+                gradient_[k][i] = dWeights[k][i] * invSum * ap + ws * (-invScale * ga[i] - v[i].dot(p));
         } else {
-            for (int i = 0; i < Dim; ++i) gradient_[k][i] = phi(offset + i) * invScale;
+            if constexpr (valueForm) value_[k] = phi(0);
+            for (int i = 0; i < Dim; ++i) gradient_[k][i] = phi(Offset + i) * invScale;
         }
-        if (second) {
+        if constexpr (second) {
             Tensor<Dim>& H = hessian_[k];
-            int q = offset + Dim;
+            int q = Offset + Dim;
             for (int i = 0; i < Dim; ++i) H(i, i) = phi(q++) * invScale2;
             for (int i = 0; i < Dim; ++i)
                 for (int j = i + 1; j < Dim; ++j) H(i, j) = H(j, i) = phi(q++) * invScale2;
@@ -297,8 +337,9 @@ void LeastSquaresOperators<Dim>::rebuild(const std::vector<Vector<Dim>>& points,
     if (options_.fallback == Fallback::growSupport)
         throw Error("LeastSquaresOperators: growSupport re-weighs with a larger h: rebuild with a fitWeight");
     prepare(points, x, rows, scale);
+    const FitFunction fit = fitFunction();
     parallelForWork(n, indices_.size(), [&](std::size_t a) {
-        status_[a] = fitPoint(a, points[a], x, weights, nullptr, scale[a]);
+        status_[a] = (this->*fit)(a, points[a], x, weights, nullptr, scale[a]);
         if (status_[a] == Status::ok) return;
         zeroPoint(a);
         if (options_.fallback == Fallback::shepard) shepardPoint(a, weights);
@@ -319,6 +360,7 @@ void LeastSquaresOperators<Dim>::rebuild(const std::vector<Vector<Dim>>& points,
     weightBuffer_.resize(indices_.size());
     dWeightBuffer_.resize(full ? indices_.size() : 0);
     const bool grow = options_.fallback == Fallback::growSupport;
+    const FitFunction fit = fitFunction();
     parallelForWork(n, indices_.size(), [&](std::size_t a) {
         const auto weigh = [&](double radius) {
             for (std::size_t k = offsets_[a]; k < offsets_[a + 1]; ++k) {
@@ -335,8 +377,8 @@ void LeastSquaresOperators<Dim>::rebuild(const std::vector<Vector<Dim>>& points,
         double factor = 1.0;
         for (;;) {
             weigh(factor * h[a]);
-            status_[a] = fitPoint(a, points[a], x, weightBuffer_, full ? dWeightBuffer_.data() : nullptr,
-                                  factor * h[a]);
+            status_[a] = (this->*fit)(a, points[a], x, weightBuffer_, full ? dWeightBuffer_.data() : nullptr,
+                                      factor * h[a]);
             if (status_[a] == Status::ok || !grow || factor >= options_.maxSupportGrowth) break;
             factor = std::min(factor * options_.supportGrowthStep, options_.maxSupportGrowth);
         }
@@ -372,9 +414,10 @@ void LeastSquaresOperators<Dim>::finish(const std::vector<Vector<Dim>>& points,
     for (std::size_t k = offsets_[a]; k < offsets_[a + 1]; ++k)
         if (k < w.size() && w[k] > 0.0) ++positive;
     std::ostringstream msg;
-    msg << "LeastSquaresOperators: point " << a << " at " << pointText<Dim>(points[a]) << " fails: "
-        << statusName(status_[a]) << " (" << (offsets_[a + 1] - offsets_[a]) << " neighbours, " << positive
-        << " with a positive weight, order " << options_.order << ", " << basisSize() << " basis terms";
+    msg << "LeastSquaresOperators: point " << a << " at " << pointText<Dim>(points[a])
+        << " fails: " << statusName(status_[a]) << " (" << (offsets_[a + 1] - offsets_[a]) << " neighbours, "
+        << positive << " with a positive weight, order " << options_.order << ", " << basisSize()
+        << " basis terms";
     if (options_.minNeighbours > basisSize())
         msg << ", at least " << options_.minNeighbours << " neighbours asked";
     if (options_.fallback == Fallback::growSupport)

@@ -164,9 +164,16 @@ private:
     void checkField(std::size_t n, const char* what) const;
     // Fits point a at y with the pair weights w[k] (and dw[k] = dw/dy for the full derivative, else
     // null) and scale h: writes its pair arrays and returns ok, or returns why it failed (writing
-    // nothing).
+    // nothing). Fixed-size matrices per basis (Order, Offset: 1 in the value form), chosen once
+    // per rebuild by fitFunction().
+    template <int Order, int Offset>
     Status fitPoint(std::size_t a, const Vector<Dim>& y, const std::vector<Vector<Dim>>& x,
                     const std::vector<double>& w, const Vector<Dim>* dw, double h);
+    using FitFunction = Status (LeastSquaresOperators::*)(std::size_t, const Vector<Dim>&,
+                                                          const std::vector<Vector<Dim>>&,
+                                                          const std::vector<double>&, const Vector<Dim>*,
+                                                          double);
+    FitFunction fitFunction() const;
     void shepardPoint(std::size_t a, const std::vector<double>& w);
     void zeroPoint(std::size_t a);
     void prepare(const std::vector<Vector<Dim>>& points, const std::vector<Vector<Dim>>& x,
