@@ -2,6 +2,7 @@
 #include "fpm/EulerPart.hpp"
 
 #include "core/Parallel.hpp"
+#include "fpm/ShiftedFit.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -10,16 +11,6 @@
 namespace mfdyn::fpm {
 
 namespace {
-
-template <int Dim>
-typename LeastSquaresOperators<Dim>::Options shiftedOptions(typename LeastSquaresOperators<Dim>::Options o,
-                                                            double minReciprocalCondition) {
-    o.form = LeastSquaresOperators<Dim>::Form::value;  // the fit evaluated away from the particle
-    o.fallback = LeastSquaresOperators<Dim>::Fallback::none;
-    o.onFailure = LeastSquaresOperators<Dim>::OnFailure::flag;  // a failed shifted fit: central
-    o.minReciprocalCondition = std::max(o.minReciprocalCondition, minReciprocalCondition);
-    return o;
-}
 
 // The minimisation direction of (5.25)-(5.27): with E = tr(epsdot) I - epsdot (the 3D form of
 // the note; in 2D the same expression gives E = [[e22, -e21], [-e21, e11]]), a unit s with
@@ -46,7 +37,7 @@ Vector<Dim> minimisationDirection(const Tensor<Dim>& gradV) {
 
 template <int Dim>
 EulerPart<Dim>::EulerPart(typename LeastSquaresOperators<Dim>::Options fit, UpwindOptions upwind)
-    : upwind_(upwind), shifted_(shiftedOptions<Dim>(fit, upwind.shiftedFitCondition)) {}
+    : upwind_(upwind), shifted_(shiftedFitOptions<Dim>(fit, upwind.shiftedFitCondition)) {}
 
 template <int Dim>
 void EulerPart<Dim>::upwind(const std::vector<Vector<Dim>>& x, const NeighbourList& rows, double h,
@@ -99,12 +90,11 @@ void EulerPart<Dim>::upwind(const std::vector<Vector<Dim>>& x, const NeighbourLi
 }
 
 template <int Dim>
-std::vector<std::size_t> EulerPart<Dim>::evaluate(const std::vector<std::size_t>& active,
-                                                  const std::vector<Vector<Dim>>& dir,
-                                                  const std::vector<Vector<Dim>>& x, const NeighbourList& rows,
-                                                  double h, const FitWeight& weight, const std::vector<double>& rho,
-                                                  const std::vector<double>& p, const std::vector<Vector<Dim>>& v,
-                                                  const std::vector<double>& c) {
+std::vector<std::size_t> EulerPart<Dim>::evaluate(
+    const std::vector<std::size_t>& active, const std::vector<Vector<Dim>>& dir,
+    const std::vector<Vector<Dim>>& x, const NeighbourList& rows, double h, const FitWeight& weight,
+    const std::vector<double>& rho, const std::vector<double>& p, const std::vector<Vector<Dim>>& v,
+    const std::vector<double>& c) {
     EulerUpwind<Dim>& r = result_;
     const std::size_t n = x.size(), m = active.size();
     // points y+ = x - l n (j < m) and y- = x + l n (m + j), each with particle i's row
@@ -114,17 +104,7 @@ std::vector<std::size_t> EulerPart<Dim>::evaluate(const std::vector<std::size_t>
         points[j] = x[i] - r.shift[i] * dir[i];
         points[m + j] = x[i] + r.shift[i] * dir[i];
     }
-    std::vector<std::size_t> offsets(2 * m + 1, 0);
-    std::vector<NeighbourList::Index> indices;
-    for (int half = 0; half < 2; ++half)
-        for (std::size_t j = 0; j < m; ++j) {
-            const std::size_t i = active[j], a = std::size_t(half) * m + j;
-            indices.insert(indices.end(), rows.indices().begin() + std::ptrdiff_t(rows.offsets()[i]),
-                           rows.indices().begin() + std::ptrdiff_t(rows.offsets()[i + 1]));
-            offsets[a + 1] = indices.size();
-        }
-    const NeighbourList shiftedRows(std::move(offsets), std::move(indices));
-    shifted_.rebuild(points, x, shiftedRows, std::vector<double>(2 * m, h), weight);
+    shifted_.rebuild(points, x, shiftedRows(active, rows, 2), std::vector<double>(2 * m, h), weight);
 
     const std::vector<double> pS = shifted_.valueOf(p);
     const std::vector<Vector<Dim>> gpS = shifted_.gradientOf(p);

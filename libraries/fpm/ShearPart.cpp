@@ -2,6 +2,7 @@
 #include "fpm/ShearPart.hpp"
 
 #include "core/Parallel.hpp"
+#include "fpm/ShiftedFit.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -9,16 +10,6 @@
 namespace mfdyn::fpm {
 
 namespace {
-
-template <int Dim>
-typename LeastSquaresOperators<Dim>::Options shiftedOptions(typename LeastSquaresOperators<Dim>::Options o,
-                                                            double minReciprocalCondition) {
-    o.form = LeastSquaresOperators<Dim>::Form::value;  // the fit evaluated away from the particle
-    o.fallback = LeastSquaresOperators<Dim>::Fallback::none;
-    o.onFailure = LeastSquaresOperators<Dim>::OnFailure::flag;  // a failed shifted fit: central
-    o.minReciprocalCondition = std::max(o.minReciprocalCondition, minReciprocalCondition);
-    return o;
-}
 
 template <int Dim>
 std::vector<double> component(const std::vector<SymmTensor<Dim>>& S, int k) {
@@ -31,7 +22,7 @@ std::vector<double> component(const std::vector<SymmTensor<Dim>>& S, int k) {
 
 template <int Dim>
 ShearPart<Dim>::ShearPart(typename LeastSquaresOperators<Dim>::Options fit, ShearOptions shear)
-    : shear_(shear), shifted_(shiftedOptions<Dim>(fit, shear.shiftedFitCondition)) {}
+    : shear_(shear), shifted_(shiftedFitOptions<Dim>(fit, shear.shiftedFitCondition)) {}
 
 template <int Dim>
 std::vector<Vector<Dim>> ShearPart<Dim>::divergence(const LeastSquaresOperators<Dim>& fit,
@@ -99,22 +90,16 @@ std::vector<std::size_t> ShearPart<Dim>::evaluate(
     const std::size_t n = x.size(), m = active.size();
     constexpr std::size_t pairs = 2 * std::size_t(Dim);
     std::vector<Vector<Dim>> points(pairs * m);
-    std::vector<std::size_t> offsets(pairs * m + 1, 0);
-    std::vector<NeighbourList::Index> indices;
     for (std::size_t q = 0; q < pairs; ++q) {
         const int l = int(q / 2);
         const double sign = q % 2 == 0 ? -1.0 : 1.0;
         for (std::size_t j = 0; j < m; ++j) {
-            const std::size_t i = active[j], a = q * m + j;
-            points[a] = x[i];
-            points[a](l) += sign * r.shift[i];
-            indices.insert(indices.end(), rows.indices().begin() + std::ptrdiff_t(rows.offsets()[i]),
-                           rows.indices().begin() + std::ptrdiff_t(rows.offsets()[i + 1]));
-            offsets[a + 1] = indices.size();
+            const std::size_t i = active[j];
+            points[q * m + j] = x[i];
+            points[q * m + j](l) += sign * r.shift[i];
         }
     }
-    const NeighbourList shiftedRows(std::move(offsets), std::move(indices));
-    shifted_.rebuild(points, x, shiftedRows, std::vector<double>(pairs * m, h), weight);
+    shifted_.rebuild(points, x, shiftedRows(active, rows, pairs), std::vector<double>(pairs * m, h), weight);
 
     // The fields at the shifted points: grad v, grad S^k, and the values of v and S^k.
     const std::vector<Tensor<Dim>> gv = shifted_.gradientOf(v);
