@@ -15,7 +15,8 @@
 //     -> rotation (on the Euler part's v: grad v refitted; W = skew grad v,
 //     S <- exp(dt W) S exp(dt W)^T) -> volume (V <- V (1 + dt div v), the note's §4b remark)
 //     -> motion (prescribed: the exact rigid rotation of x, v = omega a x (x - c); upwind:
-//     x <- x + dt v_uw of the step's start; frozen: none)
+//     x <- x + dt v_uw of the step's start; frozen: none) -> particleManagement (optional, last:
+//     close pairs merged, particles inserted into holes, fpm/ParticleManagement.cpp)
 //
 // constant/fpmProperties:
 //     subsystems (euler rotation);      // euler | shear | rotation (shear is not built); the order
@@ -32,6 +33,7 @@
 //                                       // or { velocity upwind; } (euler: x <- x + dt v_uw)
 //     initialState { type rigidRotation; omega (0 0 -1); }   // optional, with velocity frozen: v at a fresh start
 //     initialStress { S (10 -10 0 0 0 0); shape { type box; min (-9 -9 -9); max (0 9 9); } }  // optional
+//     particleManagement { insert yes; holeSize 0.5; merge yes; mergeDistance 0.15; }  // optional, off
 //
 // S is given as (xx yy zz xy yz xz); initialStress is applied at a fresh start to the particles
 // inside its shape (all of them without one).
@@ -72,6 +74,7 @@
 #include <cstdio>
 #include <limits>
 #include <sstream>
+#include <type_traits>
 
 namespace mfdyn {
 
@@ -198,6 +201,36 @@ KeywordSchema FpmSolver<Dim>::instabilityKeywords() {
 }
 
 template <int Dim>
+KeywordSchema FpmSolver<Dim>::managementKeywords() {
+    return KeywordSchema("solver", "fpmSolid/particleManagement")
+        .flag("insert",
+              "insert a particle, with the order-1 fit's state, where a hole opens inside the body "
+              "(fpm/ParticleManagement.cpp)")
+        .orDefault(false)
+        .scalar("holeSize", "-", "a hole: a point inside the body with no particle within holeSize h")
+        .greaterThan(0)
+        .atMost(1)
+        .orDefault(0.5)
+        .flag("merge",
+              "merge a pair of particles closer than mergeDistance h into one (mass and momentum kept)")
+        .orDefault(false)
+        .scalar("mergeDistance", "-", "the distance below which a pair is merged, in h")
+        .greaterThan(0)
+        .lessThan(0.5)
+        .orDefault(0.15)
+        .scalar("surfaceOffset", "-",
+                "a hole candidate y is inside the body when the centre-of-mass offset of its neighbours, "
+                "|sum w (x_j - y)| / (h sum w), is at most this (0.5 one spacing beyond a lattice face, "
+                "0.13-0.20 at a missing face particle's site, 0 at an interior one)")
+        .greaterThan(0)
+        .lessThan(1)
+        .orDefault(0.3)
+        .integer("interval", "-", "applied after the motion every this many steps")
+        .atLeast(1)
+        .orDefault(1);
+}
+
+template <int Dim>
 KeywordSchema FpmSolver<Dim>::shearKeywords() {
     return KeywordSchema("solver", "fpmSolid/shear")
         .scalar("delta", "s",
@@ -308,6 +341,11 @@ KeywordSchema FpmSolver<Dim>::keywords() {
             "deviatoric stress exceeds a bound (the negative controls of doc/methods/fpm.md R9)")
         .optional()
         .nested(&FpmSolver<Dim>::instabilityKeywords)
+        .dictionary("particleManagement",
+                    "insertion into holes and merging of close pairs after the motion (off by default): "
+                    "insert, holeSize, merge, mergeDistance, surfaceOffset, interval")
+        .optional()
+        .nested(&FpmSolver<Dim>::managementKeywords)
         .dictionary("reference",
                     "{ type linearFlow; }: the exact uniform state of a linear velocity field (initialState "
                     "linearVelocity) and uniform rho, p, e, S, measured every step (doc/methods/fpm.md §4.4, "
@@ -386,6 +424,7 @@ FpmSolver<Dim>::FpmSolver(SolverRun& run)
     }
     readMaterials();
     initialiseFields();
+    readManagement();
     boundaryConditions_ = readBoundaryConditions(*owner_);
     if (!boundaryConditions_.empty() && !(euler_ || shear_) && !prescribed_)
         Log::warning(
@@ -871,6 +910,8 @@ void FpmSolver<Dim>::step(double dt) {
         worstChange_.p = std::max(worstChange_.p, c.p);
         worstChange_.v = std::max(worstChange_.v, c.v);
     }
+    // last, on the moved and checked state: the next step's neighbours see the new particles
+    if (management_ && (time().timeIndex() + 1) % managementInterval_ == 0) manageParticles();
 }
 
 // The Euler part (fpm/EulerPart.hpp) on the fit of this step: c from each particle's equation of
@@ -964,6 +1005,67 @@ void FpmSolver<Dim>::applyFreeSurface() {
         if constexpr (Dim > 1) T -= (T.trace() / (Dim - 1)) * P;
         S[i] = SymmTensor<Dim>::fromFull(T);
     });
+}
+
+template <int Dim>
+void FpmSolver<Dim>::readManagement() {
+    if (!settings_.given("particleManagement")) return;
+    const KeywordValues& k = settings_.nested("particleManagement");
+    typename fpm::ParticleManagement<Dim>::Options o;
+    o.insert = k.flag("insert");
+    o.holeSize = k.scalar("holeSize");
+    o.merge = k.flag("merge");
+    o.mergeDistance = k.scalar("mergeDistance");
+    o.surfaceOffset = k.scalar("surfaceOffset");
+    managementInterval_ = long(k.integer("interval"));
+    if (o.merge && o.mergeDistance >= o.holeSize)
+        throw settings_.dictionary("particleManagement")
+            .error("mergeDistance",
+                   "mergeDistance must be below holeSize (a merged pair would leave a hole)");
+    if (!o.insert && !o.merge) return;
+    management_ = std::make_unique<fpm::ParticleManagement<Dim>>(o);
+    Log::info("fpmSolid: particle management every " + std::to_string(managementInterval_) + " step(s): " +
+              (o.insert ? "insertion where no particle lies within " + formatKeywordNumber(o.holeSize) +
+                              " h of a point inside the body (centre-of-mass offset <= " +
+                              formatKeywordNumber(o.surfaceOffset) + ")"
+                        : std::string("no insertion")) +
+              "; " +
+              (o.merge ? "merging of pairs closer than " + formatKeywordNumber(o.mergeDistance) + " h"
+                       : std::string("no merging")));
+}
+
+// Merging and insertion (fpm/ParticleManagement.hpp) on the moved particles; the solver's own
+// per-particle arrays follow: a merged pair keeps its survivor's, an inserted particle starts its
+// state-change measure from its inserted state and takes its material's mu and c.
+template <int Dim>
+void FpmSolver<Dim>::manageParticles() {
+    if constexpr (Dim > 1) {
+        auto timed = phase("particleManagement");
+        const std::vector<std::int64_t> origin = management_->apply(*owner_, h_, *fitWeight_);
+        const auto& last = management_->last();
+        if (last.inserted == 0 && last.merged == 0) return;
+        const std::size_t n = x_.size();
+        const std::vector<std::int64_t>* material = owner_->template findField<std::int64_t>("material");
+        const auto remap = [&](auto& values, auto fresh) {
+            if (values.empty()) return;
+            std::remove_reference_t<decltype(values)> next(n);
+            for (std::size_t i = 0; i < n; ++i)
+                next[i] = origin[i] >= 0 ? values[std::size_t(origin[i])] : fresh(i);
+            values.swap(next);
+        };
+        remap(rhoStart_, [&](std::size_t i) { return rho_[i]; });
+        remap(pStart_, [&](std::size_t i) { return (*p_)[i]; });
+        remap(vStart_, [&](std::size_t i) { return v_[i]; });
+        remap(radius0_, [&](std::size_t i) { return (x_[i] - centre_).norm(); });
+        remap(mu_, [&](std::size_t i) {
+            const auto* strength = (*materials_)[std::size_t((*material)[i])].strength.get();
+            return strength ? strength->shearModulus() : 0.0;
+        });
+        remap(c_, [&](std::size_t i) {
+            const EquationOfState* eos = (*materials_)[std::size_t((*material)[i])].eos.get();
+            return eos ? std::sqrt(std::max(eos->soundSpeedSquared(rho_[i], e_ ? (*e_)[i] : 0.0), 0.0)) : 0.0;
+        });
+    }
 }
 
 template <int Dim>
@@ -1249,10 +1351,11 @@ std::vector<std::string> FpmSolver<Dim>::summary(double) const {
         neighboursPerParticle_, grown_, shepard_);
     lines.push_back(line);
     if (euler_) {
-        std::snprintf(line, sizeof line,
-                      "euler                central evaluations (particle-steps): %zu with |grad p| ~ 0, %zu "
-                      "with a shifted fit short of neighbours; %zu with a shortened shift; largest shift %.4g (h %.4g)",
-                      flat_, tooFew_, eulerShortened_, maxShift_, h_);
+        std::snprintf(
+            line, sizeof line,
+            "euler                central evaluations (particle-steps): %zu with |grad p| ~ 0, %zu "
+            "with a shifted fit short of neighbours; %zu with a shortened shift; largest shift %.4g (h %.4g)",
+            flat_, tooFew_, eulerShortened_, maxShift_, h_);
         lines.push_back(line);
         std::snprintf(
             line, sizeof line,
@@ -1275,6 +1378,16 @@ std::vector<std::string> FpmSolver<Dim>::summary(double) const {
                       time().timeIndex() > 0 ? double(surfaceParticles_) / double(time().timeIndex()) : 0.0,
                       outerPressure_, shear_ ? ", S n = 0" : "",
                       settings_.nested("freeSurface").word("normals").c_str());
+        lines.push_back(line);
+    }
+    if (management_) {
+        const auto& t = management_->total();
+        std::snprintf(
+            line, sizeof line,
+            "particle management  %zu inserted, %zu pairs merged (over the run; %zu particles now); "
+            "hole candidates rejected: %zu beyond a surface, %zu unfitted; mass change %.3e, "
+            "momentum change %.3e",
+            t.inserted, t.merged, x_.size(), t.surface, t.unfitted, t.mass, t.momentum.norm());
         lines.push_back(line);
     }
     if (flowReference_) {

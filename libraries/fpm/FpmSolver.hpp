@@ -5,6 +5,7 @@
 #include "core/KeywordSchema.hpp"
 #include "fpm/EulerPart.hpp"
 #include "fpm/LinearFlowReference.hpp"
+#include "fpm/ParticleManagement.hpp"
 #include "fpm/ShearPart.hpp"
 #include "fpm/splitting/Splitting.hpp"
 #include "geometry/Shape.hpp"
@@ -35,6 +36,7 @@ public:
     static KeywordSchema shearKeywords();
     static KeywordSchema freeSurfaceKeywords();
     static KeywordSchema instabilityKeywords();
+    static KeywordSchema managementKeywords();
     static constexpr const char* propertiesDictionary = "fpmProperties";
 
     TimeStepVote stableTimeStep() override;
@@ -79,6 +81,10 @@ private:
     // The free-surface conditions on the particles detected this step: p = p_o, and with the shear
     // part S n = 0 (S <- P S P - tr(P S P)/(d - 1) P, P = I - n n^T), so that sigma n = -p_o n.
     void applyFreeSurface();
+    // particleManagement { ... }: merging and insertion after the motion (fpm/ParticleManagement.hpp),
+    // the solver's per-particle arrays carried over to the new particles.
+    void readManagement();
+    void manageParticles();
 
     std::unique_ptr<ParticleSet<Dim>> owner_;
     const Dictionary& properties_;
@@ -148,7 +154,9 @@ private:
     // instabilityCheck { pressure (lo hi); stress s; }: a state outside is stopped as an instability.
     bool checkPressure_ = false;
     double pressureLow_ = 0, pressureHigh_ = 0, stressBound_ = 0;
-    std::size_t surfaceParticles_ = 0;  // detected, summed over the steps
+    std::size_t surfaceParticles_ = 0;                          // detected, summed over the steps
+    std::unique_ptr<fpm::ParticleManagement<Dim>> management_;  // null without particleManagement
+    long managementInterval_ = 1;                               // applied every this many steps
 
     std::vector<Vector<Dim>> motionVelocity_;  // x <- x + dt motionVelocity_ (upwind, dimensional)
     std::vector<double> divergence_;           // the step's div v for V (the Euler part's div v_uw)
