@@ -33,3 +33,19 @@ entry() {
 fieldRange() {
     particleInfo -case "$1" -time "$2" | awk -v f="$3" '$1 == f { if ($2 ~ /^[a-zA-Z]/) print $3, $4; else print $2, $3; found = 1 } END { if (!found) exit 1 }'
 }
+# lagrangianVariant <tutorial> <case> <deltaT>: the tutorial on the coarse sphere with the particles
+# moved by the split (motion dimensional) and its velocity boundary condition in the start frame
+# (v = v0(xi)): the Lagrangian mode of the linear-flow validations (doc/methods/fpm.md §4.6, §4.10).
+lagrangianVariant() {
+    copyTutorial "$1" "$2"
+    coarseSphere "$2" "$3"
+    sed -i 's/velocity frozen;/velocity dimensional;/' "$2/constant/fpmProperties"
+    sed -i 's/type     linearVelocity;/type     linearVelocity; frame initial;/' "$2/constant/boundaryConditions"
+    grep -q "velocity dimensional;" "$2/constant/fpmProperties" || fail "could not set velocity dimensional in $2"
+    grep -q "frame initial;" "$2/constant/boundaryConditions" || fail "could not set frame initial in $2"
+}
+# exactStress <referenceError> <k...>: components k (1-based, xx yy zz xy yz xz) of its exactStress.
+exactStress() {
+    local f="$1"; shift
+    awk -v ks="$*" '$1 == "exactStress" { gsub(/[();]/, ""); n = split(ks, k, " "); s = ""; for (i = 1; i <= n; i++) s = s (i > 1 ? " " : "") $(k[i] + 1); print s }' "$f"
+}
