@@ -115,6 +115,25 @@ NeighbourSearchOptions searchOptions() {
 
 }  // namespace
 
+namespace {
+
+// An upwind part's shift from its dictionary: delta (a time, l = delta c) or deltaFraction (of h),
+// not both, and the clamp maxShift; the part's defaults kept where neither is given.
+void readShift(const KeywordValues& e, const Dictionary& dict, bool& deltaIsTime, double& delta,
+               double& maxShift) {
+    if (e.given("delta") && e.given("deltaFraction"))
+        throw dict.error("deltaFraction", "give delta (a time) or deltaFraction (of h), not both");
+    if (e.given("deltaFraction")) {
+        deltaIsTime = false;
+        delta = e.scalar("deltaFraction");
+    } else if (e.given("delta")) {
+        delta = e.scalar("delta");
+    }
+    maxShift = e.scalar("maxShift");
+}
+
+}  // namespace
+
 template <int Dim>
 KeywordSchema FpmSolver<Dim>::motionKeywords() {
     return KeywordSchema("solver", "fpmSolid/motion")
@@ -529,16 +548,7 @@ void FpmSolver<Dim>::readEuler() {
     fpm::UpwindOptions upwind;
     if (settings_.given("euler")) {
         const KeywordValues& e = settings_.nested("euler");
-        const Dictionary& dict = settings_.dictionary("euler");
-        if (e.given("delta") && e.given("deltaFraction"))
-            throw dict.error("deltaFraction", "give delta (a time) or deltaFraction (of h), not both");
-        if (e.given("deltaFraction")) {
-            upwind.deltaIsTime = false;
-            upwind.delta = e.scalar("deltaFraction");
-        } else if (e.given("delta")) {
-            upwind.delta = e.scalar("delta");
-        }
-        upwind.maxShift = e.scalar("maxShift");
+        readShift(e, settings_.dictionary("euler"), upwind.deltaIsTime, upwind.delta, upwind.maxShift);
         literalSoundSpeed_ = e.word("soundSpeed") == "literal";
         const std::string& direction = e.word("direction");
         upwind.direction = direction == "minimisation" ? fpm::UpwindDirection::minimisation
@@ -573,16 +583,7 @@ void FpmSolver<Dim>::readShear() {
     options.literalSoundSpeed = literalSoundSpeed_;
     if (settings_.given("shear")) {
         const KeywordValues& e = settings_.nested("shear");
-        const Dictionary& dict = settings_.dictionary("shear");
-        if (e.given("delta") && e.given("deltaFraction"))
-            throw dict.error("deltaFraction", "give delta (a time) or deltaFraction (of h), not both");
-        if (e.given("deltaFraction")) {
-            options.deltaIsTime = false;
-            options.delta = e.scalar("deltaFraction");
-        } else if (e.given("delta")) {
-            options.delta = e.scalar("delta");
-        }
-        options.maxShift = e.scalar("maxShift");
+        readShift(e, settings_.dictionary("shear"), options.deltaIsTime, options.delta, options.maxShift);
         options.correctedVelocity = e.word("velocity") == "corrected";
         options.central = e.word("scheme") == "central";
     }
