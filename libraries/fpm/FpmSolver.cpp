@@ -38,7 +38,8 @@
 // S is given as (xx yy zz xy yz xz); initialStress is applied at a fresh start to the particles
 // inside its shape (all of them without one).
 // system/controlDict: a fixed deltaT (adjustTimeStep no; the thesis's 0.001), or adjustTimeStep yes
-// with maxCo: dt = maxCo x spacing / max |v| (prescribed motion).
+// with maxCo: dt = maxCo x spacing / max |v| (prescribed motion), maxCo x spacing / max (c_L + |v|)
+// with the Euler or shear part (c_L^2 = c^2 + (2 - 2/d) mu / rho, the note's [R] of §3.5).
 //
 // constant/materialProperties (optional): materials { name { equationOfState { ... } strength { ... } } }
 // through the shared MaterialSet (both models optional; a constitutiveLaw is refused), the
@@ -751,9 +752,26 @@ void FpmSolver<Dim>::initialiseFields() {
 
 template <int Dim>
 TimeStepVote FpmSolver<Dim>::stableTimeStep() {
-    if (!prescribed_)
-        return {std::numeric_limits<double>::infinity(),
-                upwindMotion_ || dimensionalMotion_ ? "fixed deltaT" : "frozen particles"};
+    if (euler_ || shear_) {
+        // The note's [R] (doc/methods/fpm.md §3.5): dt = maxCo spacing / max (c_L + |v|), with
+        // c_L^2 = c^2 + (2 - 2/d) mu / rho (c^2 the Euler part's, 0 without it; mu the shear part's),
+        // the longitudinal wave of the full system (§1) in the particles' frame, plus their speed.
+        const std::vector<std::int64_t>& material = owner_->integerField("material");
+        const double speed = GlobalReduce::max(x_.size(), [&](std::size_t i) {
+            double c2 = 0;
+            if (euler_) {
+                const EquationOfState& eos = *(*materials_)[std::size_t(material[i])].eos;
+                const double e = e_ ? (*e_)[i] : 0.0;
+                c2 += literalSoundSpeed_ ? eos.densityDerivative(rho_[i], e)
+                                         : eos.soundSpeedSquared(rho_[i], e);
+            }
+            if (shear_) c2 += (2.0 - 2.0 / Dim) * mu_[i] / rho_[i];
+            return std::sqrt(std::max(c2, 0.0)) + v_[i].norm();
+        });
+        return {speed > 0 ? time().maxCo() * spacing_ / speed : std::numeric_limits<double>::infinity(),
+                "Courant (c_L + |v|)"};
+    }
+    if (!prescribed_) return {std::numeric_limits<double>::infinity(), "frozen particles"};
     const double vmax =
         std::sqrt(GlobalReduce::max(v_.size(), [&](std::size_t i) { return v_[i].squaredNorm(); }));
     return {vmax > 0 ? time().maxCo() * spacing_ / vmax : std::numeric_limits<double>::infinity(), "Courant"};

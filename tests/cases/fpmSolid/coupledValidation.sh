@@ -41,4 +41,17 @@ echo "R7 Lagrangian: p(5) exact $p, S21 $s21, rho $rho; relative errors p $ep, S
 awk -v a="$ep" -v b="$es" -v c="$er" 'BEGIN { exit !(a <= 1e-3 && b <= 1e-3 && c <= 1e-3) }' || fail "R7 Lagrangian: an error above 1e-3"
 grep -q "motion: the shear part's dimensional velocity, x <- x + dt v_D + dt (v_uw - Pi^c v)" "$l/log.fpmSolid" ||
     fail "R7 Lagrangian: the motion is not logged"
+# The Courant step of the Euler and shear parts (adjustTimeStep yes, maxCo 0.3): dt = 0.3 x 1.25 /
+# max (c_L + |v|), c_L^2 = c^2 + (4/3) mu / rho = 16 + 66.67 (c_L = 9.0921, the note's table §1), |v| <= 0.05:
+# 0.0410 to 0.0412 once the step has grown from the first deltaT (the progress line shows 3 digits).
+a="$WORK/adjustable"
+copyTutorial coupledValidation "$a"
+coarseSphere "$a" 0.001
+sed -i 's/^adjustTimeStep .*/adjustTimeStep  yes;\nmaxCo           0.3;/; s/^endTime .*/endTime 1;/' "$a/system/controlDict"
+grep -q "^maxCo           0.3;" "$a/system/controlDict" || fail "could not set maxCo"
+run "$a" particleGen
+run "$a" fpmSolid
+step=$(grep -E "^Step .* t = 1 " "$a/log.fpmSolid" | sed -E 's/.*dt = ([0-9.e-]+).*/\1/')
+echo "Courant step at t = 1: $step ($(grep -m1 -o 'Courant (c_L + |v|)' "$a/log.fpmSolid"))"
+[ "$step" = "0.041" ] || fail "the Courant step at t = 1 is $step, expected 0.041 (0.3 x 1.25 / (9.0921 + |v|))"
 echo "PASS: R7 coupled validation, frozen and Lagrangian, to 5 s"
