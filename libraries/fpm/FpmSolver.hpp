@@ -142,7 +142,10 @@ private:
         double rho = 0, p = 0,
                S = 0;  // max over particles of |rho - rho_ex|, |p - p_ex|, max_k |S_k - S_ex,k|
     };
-    FlowError flowError_, flowRelative_, worstFlowRelative_;  // absolute now; relative now; relative, worst
+    // absolute now; relative now; the largest absolute error and the largest |exact| over the run (their
+    // ratio is the run's relative error: a quantity that starts at 0 has no meaningful pointwise ratio early)
+    FlowError flowError_, flowRelative_, worstFlowError_, largestExact_;
+    FlowError flowRunRelative() const;
 
     // constant/boundaryConditions (the shared family): velocity conditions after every stage that
     // changes v, position conditions after the motion.
