@@ -62,6 +62,7 @@
 
 #include "core/Log.hpp"
 #include "core/Parallel.hpp"
+#include "fpm/FreeSurfaceCondition.hpp"
 #include "fpm/RotationPart.hpp"
 #include "solver/InitialState.hpp"
 #include "solver/LinearVelocity.hpp"
@@ -195,6 +196,12 @@ KeywordSchema FpmSolver<Dim>::freeSurfaceKeywords() {
             "traction",
             "with the shear part, also S n = 0 on the surface particles (sigma n = -p_o n); no: p = p_o only")
         .orDefault(true)
+        .word("velocity", {"unchanged", "characteristic"},
+              "the surface particles' velocity when a part's conditions overwrite p and S: unchanged, or "
+              "characteristic (the outgoing characteristic kept: v -= (sigma n - sigma_o n) / Z per "
+              "direction, Z = rho c in the Euler part, sqrt(mu rho) tangential and sqrt(2 (1 - 1/d) mu rho) "
+              "normal in the shear part)")
+        .orDefault("unchanged")
         .scalar("offsetThreshold", "-", "the centre-of-mass offset above which a particle is a candidate")
         .atLeast(0)
         .lessThan(1)
@@ -812,7 +819,7 @@ void FpmSolver<Dim>::step(double dt) {
         if (surface_) {  // on the rows within h (growSupport's rows reach further: detection takes h)
             surface_->detect(x_, rows_, h_);
             surfaceParticles_ += surface_->surfaceCount();
-            applyFreeSurface();  // the step starts from a state that satisfies the conditions
+            applyFreeSurface(std::nullopt);  // the step starts from a state that satisfies the conditions
         }
         grown_ += fit_.fallbackCounts().grown;
         shepard_ += fit_.fallbackCounts().shepard;
@@ -844,7 +851,7 @@ void FpmSolver<Dim>::step(double dt) {
         // value holds on the boundary particles throughout)
         if (stage.part != fpm::Subsystem::rotation && !boundaryConditions_.empty())
             boundaryConditions_.constrainVelocity(*owner_, v_, time().value() + dt);
-        if (stage.part != fpm::Subsystem::rotation && surface_) applyFreeSurface();
+        if (stage.part != fpm::Subsystem::rotation && surface_) applyFreeSurface(stage.part);
     }
     {
         // V <- V (1 + dt div v): the Euler part's div v_uw where it runs (so that rho V stays the
@@ -1003,26 +1010,32 @@ void FpmSolver<Dim>::readFreeSurface() {
     surface_ = std::make_unique<SurfaceDetection<Dim>>(o);
     outerPressure_ = f.scalar("pressure");
     surfaceTraction_ = f.flag("traction");
+    characteristicSurface_ = f.word("velocity") == "characteristic";
     if (!euler_ && !shear_)
         throw properties_.error("freeSurface",
                                 "freeSurface conditions act on p and S: subsystems with euler or shear");
 }
 
+// p = p_o and S n = 0 on the surface particles (fpm/FreeSurfaceCondition.hpp). After a part's stage,
+// `velocity characteristic` keeps each particle's outgoing characteristic of that part; not at the
+// step's start, where a particle may have just joined the surface with a state built inside.
 template <int Dim>
-void FpmSolver<Dim>::applyFreeSurface() {
+void FpmSolver<Dim>::applyFreeSurface(std::optional<fpm::Subsystem> stage) {
     const auto& flag = surface_->surface();
     const auto& normal = surface_->normal();
     std::vector<double>& p = *p_;
     std::vector<SymmTensor<Dim>>& S = *S_;
     const bool projectStress = shear_ && surfaceTraction_;
+    const bool eulerKick = characteristicSurface_ && stage == fpm::Subsystem::euler;
+    const bool shearKick = characteristicSurface_ && stage == fpm::Subsystem::shear;
     parallelFor(x_.size(), [&](std::size_t i) {
         if (!flag[i]) return;
-        p[i] = outerPressure_;
-        if (!projectStress || normal[i].squaredNorm() == 0) return;
-        const Tensor<Dim> P = Tensor<Dim>::Identity() - normal[i] * normal[i].transpose();
-        Tensor<Dim> T = P * S[i].full() * P;
-        if constexpr (Dim > 1) T -= (T.trace() / (Dim - 1)) * P;
-        S[i] = SymmTensor<Dim>::fromFull(T);
+        const bool oriented = normal[i].squaredNorm() > 0;
+        fpm::applySurfacePressure<Dim>(outerPressure_, normal[i], rho_[i], eulerKick ? c_[i] : 0.0,
+                                       eulerKick && oriented, p[i], v_[i]);
+        if (projectStress && oriented)
+            fpm::applySurfaceTraction<Dim>(normal[i], mu_.empty() ? 0.0 : mu_[i], rho_[i], shearKick, S[i],
+                                           v_[i]);
     });
 }
 

@@ -80,7 +80,7 @@ private:
     void readFreeSurface();
     // The free-surface conditions on the particles detected this step: p = p_o, and with the shear
     // part S n = 0 (S <- P S P - tr(P S P)/(d - 1) P, P = I - n n^T), so that sigma n = -p_o n.
-    void applyFreeSurface();
+    void applyFreeSurface(std::optional<fpm::Subsystem> stage);  // the stage just run, or none (step start)
     // particleManagement { ... }: merging and insertion after the motion (fpm/ParticleManagement.hpp),
     // the solver's per-particle arrays carried over to the new particles.
     void readManagement();
@@ -154,6 +154,7 @@ private:
     std::unique_ptr<SurfaceDetection<Dim>> surface_;
     double outerPressure_ = 0;
     bool surfaceTraction_ = true;
+    bool characteristicSurface_ = false;  // freeSurface { velocity characteristic; }
     // instabilityCheck { pressure (lo hi); stress s; }: a state outside is stopped as an instability.
     bool checkPressure_ = false;
     double pressureLow_ = 0, pressureHigh_ = 0, stressBound_ = 0;

@@ -1,0 +1,95 @@
+// The free-surface conditions of fpm/FreeSurfaceCondition.hpp: the state they leave (p = p_o, S n = 0,
+// S traceless with its tangential part kept) and, in the characteristic variant, the outgoing
+// characteristic w_out = Z v - sigma n of each direction unchanged by them.
+#include "fpm/FreeSurfaceCondition.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace mfdyn;
+
+namespace {
+
+Vector<3> unitNormal() {
+    return Vector<3>(0.3, -0.5, 0.8).normalized();
+}
+
+SymmTensor<3> someDeviator() {
+    Tensor<3> t;
+    t << 4.0, 1.5, -2.0, 1.5, -1.0, 0.7, -2.0, 0.7, -3.0;  // symmetric, trace 0
+    return SymmTensor<3>::fromFull(t);
+}
+
+}  // namespace
+
+TEST(FreeSurfaceCondition, PressureOverwriteLeavesTheVelocityAlone) {
+    double p = 3.0;
+    Vector<3> v(1.0, 2.0, 3.0);
+    fpm::applySurfacePressure<3>(1.0, unitNormal(), 2.0, 4.0, false, p, v);
+    EXPECT_EQ(p, 1.0);
+    EXPECT_EQ(v, Vector<3>(1.0, 2.0, 3.0));
+}
+
+TEST(FreeSurfaceCondition, CharacteristicPressureKeepsTheOutgoingInvariant) {
+    // w_out = rho c v.n - sigma_nn = rho c v.n + p, unchanged while p goes to p_o; v.t unchanged
+    const Vector<3> n = unitNormal();
+    const double rho = 2.0, c = 4.0, pOuter = 1.0;
+    double p = 3.0;
+    const Vector<3> v0(1.0, 2.0, 3.0);
+    Vector<3> v = v0;
+    const double before = rho * c * n.dot(v0) + p;
+    fpm::applySurfacePressure<3>(pOuter, n, rho, c, true, p, v);
+    EXPECT_EQ(p, pOuter);
+    EXPECT_NEAR(rho * c * n.dot(v) + p, before, 1e-14 * before);
+    EXPECT_NEAR(((v - v0) - n * n.dot(v - v0)).norm(), 0.0, 1e-15);
+    EXPECT_NEAR(n.dot(v - v0), (3.0 - 1.0) / (rho * c), 1e-15);  // 0.25: outwards under overpressure
+}
+
+TEST(FreeSurfaceCondition, TractionProjectionIsTracelessWithZeroTractionAndKeepsTheTangentialPart) {
+    const Vector<3> n = unitNormal();
+    SymmTensor<3> S = someDeviator();
+    const Tensor<3> before = S.full();
+    Vector<3> v(0.5, 0.0, -0.5);
+    fpm::applySurfaceTraction<3>(n, 50.0, 1.2, false, S, v);
+    const Tensor<3> after = S.full();
+    EXPECT_NEAR((after * n).norm(), 0.0, 1e-14);
+    EXPECT_NEAR(after.trace(), 0.0, 1e-14);
+    EXPECT_EQ(v, Vector<3>(0.5, 0.0, -0.5));
+    // the tangential-tangential part is the old one less its trace spread over the plane
+    const Tensor<3> P = Tensor<3>::Identity() - n * n.transpose();
+    const Tensor<3> tangential = P * before * P;
+    EXPECT_NEAR((after - (tangential - tangential.trace() / 2.0 * P)).norm(), 0.0, 1e-14);
+}
+
+TEST(FreeSurfaceCondition, CharacteristicTractionKeepsTheOutgoingInvariantOfEachDirection) {
+    const Vector<3> n = unitNormal();
+    const double mu = 50.0, rho = 1.2;
+    const double zShear = std::sqrt(mu * rho), zNormal = std::sqrt(4.0 / 3.0 * mu * rho);
+    SymmTensor<3> S = someDeviator();
+    const Vector<3> traction = S.full() * n;
+    const Vector<3> v0(0.5, 0.0, -0.5);
+    Vector<3> v = v0;
+    fpm::applySurfaceTraction<3>(n, mu, rho, true, S, v);
+    const Tensor<3> P = Tensor<3>::Identity() - n * n.transpose();
+    const Vector<3> tractionAfter = S.full() * n;
+    // along the surface: Z_s P v - P sigma n; along n: Z_n v.n - n.sigma n (the shear part's sigma = S)
+    EXPECT_NEAR((zShear * P * v - P * tractionAfter - (zShear * P * v0 - P * traction)).norm(), 0.0, 1e-13);
+    EXPECT_NEAR(zNormal * n.dot(v) - n.dot(tractionAfter) - (zNormal * n.dot(v0) - n.dot(traction)), 0.0,
+                1e-13);
+    EXPECT_GT((v - v0).norm(), 0.1);  // a real correction: |S n| / Z is about 0.5 here
+}
+
+TEST(FreeSurfaceCondition, TwoDimensionalNormalImpedanceIsSqrtMuRho) {
+    // in 2D S_nn' = 2 mu (1 - 1/2) dv_n/dn = mu dv_n/dn: both directions at sqrt(mu rho)
+    const Vector<2> n(1.0, 0.0);
+    SymmTensor<2> S;
+    S(0, 0) = 2.0;
+    S(1, 1) = -2.0;
+    S(0, 1) = 1.0;
+    Vector<2> v = Vector<2>::Zero();
+    fpm::applySurfaceTraction<2>(n, 4.0, 1.0, true, S, v);
+    EXPECT_NEAR(v(0), -2.0 / 2.0, 1e-15);
+    EXPECT_NEAR(v(1), -1.0 / 2.0, 1e-15);
+    EXPECT_NEAR(S(0, 0), 0.0, 1e-15);
+    EXPECT_NEAR(S(0, 1), 0.0, 1e-15);
+    EXPECT_NEAR(S(1, 1), 0.0, 1e-15);  // traceless with S n = 0: nothing left in 2D
+}
