@@ -49,3 +49,24 @@ exactStress() {
     local f="$1"; shift
     awk -v ks="$*" '$1 == "exactStress" { gsub(/[();]/, ""); n = split(ks, k, " "); s = ""; for (i = 1; i <= n; i++) s = s (i > 1 ? " " : "") $(k[i] + 1); print s }' "$f"
 }
+# freeSurfaceSphere <tutorial> <case> <endTime>: a free-surface sphere tutorial (coupledShearingSphere,
+# rotatingSphere) on the coarse lattice with the tutorials' h / spacing of 3 (spacing 1.25, h 3.75:
+# 280 particles), run to endTime, with only the last time written.
+freeSurfaceSphere() {
+    copyTutorial "$1" "$2"
+    sed -i 's/spacing 0.75; }/spacing 1.25; }/' "$2/system/particleGenDict"
+    sed -i 's/^smoothingLength .*/smoothingLength 3.75;/' "$2/constant/fpmProperties"
+    sed -i "s/^endTime .*/endTime $3;/; s/^writeInterval .*/writeInterval 1;/" "$2/system/controlDict"
+    grep -q "spacing 1.25; }" "$2/system/particleGenDict" || fail "could not set the spacing in $2"
+    grep -q "^smoothingLength 3.75;" "$2/constant/fpmProperties" || fail "could not set h in $2"
+    grep -q "velocity characteristic;" "$2/constant/fpmProperties" || fail "$1's free surface is not characteristic"
+    run "$2" particleGen
+    run "$2" fpmSolid
+}
+# energyRises <conservedQuantities.csv>: "largest-rise time-of-it start end L_z-start L_z-end" of
+# totalEnergy between consecutive written times (time "none" when it never rises).
+energyRises() {
+    awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) { if ($i == "totalEnergy") k = i; if ($i == "angularMomentum_z") z = i } next }
+        !k || !z { exit 1 } n++ && $k - prev > worst { worst = $k - prev; t = $1 } { prev = $k; if (n == 1) { e0 = $k; l0 = $z } lz = $z }
+        END { print worst + 0, (t == "" ? "none" : t), e0, prev, l0, lz }' "$1"
+}

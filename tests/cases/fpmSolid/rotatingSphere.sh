@@ -8,15 +8,8 @@
 # R11 as written on the tutorial's sphere is the validation test rotatingSphereR11.
 source "$(dirname "$0")/common.sh"
 c="$WORK/rotatingSphere"
-copyTutorial rotatingSphere "$c"
-sed -i 's/spacing 0.75; }/spacing 1.25; }/' "$c/system/particleGenDict"
-sed -i 's/^smoothingLength .*/smoothingLength 3.75;/' "$c/constant/fpmProperties"
-sed -i 's/^endTime .*/endTime 1.5;/; s/^writeInterval .*/writeInterval 1;/' "$c/system/controlDict"
-grep -q "spacing 1.25; }" "$c/system/particleGenDict" || fail "could not set the spacing"
-grep -q "^smoothingLength 3.75;" "$c/constant/fpmProperties" || fail "could not set h"
+freeSurfaceSphere rotatingSphere "$c" 1.5
 grep -q "^subsystems *(shear euler rotation);" "$c/constant/fpmProperties" || fail "the tutorial does not run all three parts"
-run "$c" particleGen
-run "$c" fpmSolid
 e="$c/postProcessing/shape/0/bodyExtents.csv"
 q="$c/postProcessing/budget/0/conservedQuantities.csv"
 [ -f "$e" ] && [ -f "$q" ] || fail "no bodyExtents or conservedQuantities output"
@@ -28,9 +21,7 @@ read -r tMax rMax r0 <<< "$first"
 echo "in-plane radius: first maximum $rMax at t = $tMax (from $r0; R11: 1.1 +- 0.2)"
 [ "$tMax" != none ] && awk -v t="$tMax" 'BEGIN { exit !(t >= 0.9 && t <= 1.3) }' ||
     fail "the in-plane radius's first maximum is at t = $tMax, not 1.1 +- 0.2"
-budget=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) { if ($i == "totalEnergy") k = i; if ($i == "angularMomentum_z") z = i } next }
-    !k || !z { exit 1 } n++ && $k - prev > worst { worst = $k - prev; t = $1 } { prev = $k; if (n == 1) { e0 = $k; l0 = $z } lz = $z }
-    END { print worst + 0, (t == "" ? "none" : t), e0, prev, l0, lz }' "$q") || fail "no totalEnergy or angularMomentum_z in $q"
+budget=$(energyRises "$q") || fail "no totalEnergy or angularMomentum_z in $q"
 read -r worst tRise e0 eEnd l0 lEnd <<< "$budget"
 echo "energy $e0 -> $eEnd, largest rise between written times $worst (t = $tRise); L_z $l0 -> $lEnd"
 awk -v w="$worst" -v a="$e0" 'BEGIN { exit !(w <= 1e-12 * a) }' || fail "the energy rose by $worst at t = $tRise"
