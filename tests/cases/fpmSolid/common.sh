@@ -11,14 +11,19 @@ copyTutorial() {
     cp -r "$SOURCE/tutorials/fpmSolid/$1" "$2"
     rm -rf "$2"/log.* "$2"/postProcessing "$2"/[0-9]* "$2"/*.png "$2"/particles.pvd
 }
+# coarseLattice <case> <h>: the reference sphere's lattice coarsened to spacing 1.25 (280 particles)
+# with the support h.
+coarseLattice() {
+    sed -i 's/spacing 0.75; }/spacing 1.25; }/' "$1/system/particleGenDict"
+    sed -i "s/^smoothingLength .*/smoothingLength $2;/" "$1/constant/fpmProperties"
+    grep -q "spacing 1.25; }" "$1/system/particleGenDict" || fail "could not set the spacing in $1"
+    grep -q "^smoothingLength $2;" "$1/constant/fpmProperties" || fail "could not set h in $1"
+}
 # coarseSphere <case> <deltaT>: the default tests' coarse reference sphere (spacing 1.25, h = 2.5:
 # 280 particles, against the tutorials' thesis values 0.75 / 1.5) and the step deltaT.
 coarseSphere() {
-    sed -i 's/spacing 0.75; }/spacing 1.25; }/' "$1/system/particleGenDict"
-    sed -i 's/^smoothingLength .*/smoothingLength 2.5;/' "$1/constant/fpmProperties"
+    coarseLattice "$1" 2.5
     sed -i "s/^deltaT .*/deltaT $2;/" "$1/system/controlDict"
-    grep -q "spacing 1.25; }" "$1/system/particleGenDict" || fail "could not set the spacing in $1"
-    grep -q "^smoothingLength 2.5;" "$1/constant/fpmProperties" || fail "could not set h in $1"
     grep -q "^deltaT $2;" "$1/system/controlDict" || fail "could not set deltaT in $1"
 }
 # run <case> <application>: runs it with its log in the case.
@@ -54,11 +59,8 @@ exactStress() {
 # 280 particles), run to endTime, with only the last time written.
 freeSurfaceSphere() {
     copyTutorial "$1" "$2"
-    sed -i 's/spacing 0.75; }/spacing 1.25; }/' "$2/system/particleGenDict"
-    sed -i 's/^smoothingLength .*/smoothingLength 3.75;/' "$2/constant/fpmProperties"
+    coarseLattice "$2" 3.75
     sed -i "s/^endTime .*/endTime $3;/; s/^writeInterval .*/writeInterval 1;/" "$2/system/controlDict"
-    grep -q "spacing 1.25; }" "$2/system/particleGenDict" || fail "could not set the spacing in $2"
-    grep -q "^smoothingLength 3.75;" "$2/constant/fpmProperties" || fail "could not set h in $2"
     grep -q "velocity characteristic;" "$2/constant/fpmProperties" || fail "$1's free surface is not characteristic"
     run "$2" particleGen
     run "$2" fpmSolid
