@@ -3,7 +3,8 @@
 # particles, to 5 s), as written: max sigma_p in [12, 20] at t = 0.5 (the largest over the
 # particles at the written times 0.45 .. 0.55), the first reversal at 1.4 +- 0.2 (taken as the first
 # minimum of the extent along the bisector x1 = x2 after its maximum: the elongation's return), and
-# no particle lost up to 5 s (the run ends at 5 s without a diagnosis, with its 1244 particles).
+# no particle lost up to 5 s (the run ends at 5 s without a diagnosis, with its 1244 particles: with
+# fitFallback none a particle with fewer than 2 (d + 1) neighbours within h stops the run).
 # The figures are printed before any assertion. Validation label: minutes.
 source "$(dirname "$0")/common.sh"
 c="$WORK/coupledShearingSphere"
