@@ -197,10 +197,11 @@ KeywordSchema FpmSolver<Dim>::freeSurfaceKeywords() {
             "with the shear part, also S n = 0 on the surface particles (sigma n = -p_o n); no: p = p_o only")
         .orDefault(true)
         .word("velocity", {"unchanged", "characteristic"},
-              "the surface particles' velocity when a part's conditions overwrite p and S: unchanged, or "
-              "characteristic (the outgoing characteristic kept: v -= (sigma n - sigma_o n) / Z per "
-              "direction, Z = rho c in the Euler part, sqrt(mu rho) tangential and sqrt(2 (1 - 1/d) mu rho) "
-              "normal in the shear part)")
+              "the surface particles' state when a part's conditions overwrite p and S: unchanged (v, rho, "
+              "e kept), or characteristic (the outgoing characteristic kept: v -= (sigma n - sigma_o n) / Z "
+              "per direction, Z = rho c in the Euler part, sqrt(mu rho) tangential and "
+              "sqrt(2 (1 - 1/d) mu rho) normal in the shear part; and the Euler part's entropy wave "
+              "rho - p / c^2: rho += (p_o - p) / c^2, e += p drho / rho^2)")
         .orDefault("unchanged")
         .scalar("offsetThreshold", "-", "the centre-of-mass offset above which a particle is a candidate")
         .atLeast(0)
@@ -1031,8 +1032,8 @@ void FpmSolver<Dim>::applyFreeSurface(std::optional<fpm::Subsystem> stage) {
     parallelFor(x_.size(), [&](std::size_t i) {
         if (!flag[i]) return;
         const bool oriented = normal[i].squaredNorm() > 0;
-        fpm::applySurfacePressure<Dim>(outerPressure_, normal[i], rho_[i], eulerKick ? c_[i] : 0.0,
-                                       eulerKick && oriented, p[i], v_[i]);
+        fpm::applySurfacePressure<Dim>(outerPressure_, normal[i], eulerKick ? c_[i] : 0.0, eulerKick && oriented,
+                                       p[i], rho_[i], e_ ? &(*e_)[i] : nullptr, v_[i]);
         if (projectStress && oriented)
             fpm::applySurfaceTraction<Dim>(normal[i], mu_.empty() ? 0.0 : mu_[i], rho_[i], shearKick, S[i],
                                            v_[i]);

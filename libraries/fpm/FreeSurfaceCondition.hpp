@@ -14,7 +14,8 @@
 //
 // and the condition sets only the incoming one, so overwriting sigma n by sigma_o n with w_out kept
 // is v <- v - (sigma n - sigma_o n) / Z, per direction with the part's own impedance:
-//     Euler part:  sigma n - sigma_o n = -(p - p_o) n,  Z = rho c (its sound speed);
+//     Euler part:  sigma n - sigma_o n = -(p - p_o) n,  Z = rho c (its sound speed), and its
+//                  entropy wave w1 = rho - p / c^2 kept as well (below);
 //     shear part:  sigma n - sigma_o n = S n (the part leaves p to the Euler part),
 //                  Z = sqrt(mu rho) along the surface (S_tn' = mu dv_t/dn) and
 //                  Z = sqrt(2 (1 - 1/d) mu rho) along n (S_nn' = 2 mu (1 - 1/d) dv_n/dn).
@@ -24,11 +25,26 @@
 
 namespace mfdyn::fpm {
 
-// p <- p_o; with `characteristic`, v <- v + (p - p_o) / (rho c) n first.
+// p <- p_o; with `characteristic`, first v <- v + (p - p_o) / (rho c) n (the outgoing
+// w = rho c v.n + p kept) and, the Euler part's entropy wave w1 = rho - p / c^2 (its (5.11), speed 0)
+// kept too, rho <- rho + (p_o - p) / c^2 with e <- e + p_m / rho_m^2 (rho_new - rho) (the part's
+// de = p drho / rho^2, at the means of the old and new p and rho), so that (rho, e) stays on the
+// isentrope through the new p (an ideal gas pinned at p_o otherwise runs its e below 0 as it
+// expands). A density that would not stay positive is left alone. e may be null (no energy).
 template <int Dim>
-void applySurfacePressure(double outerPressure, const Vector<Dim>& n, double rho, double c,
-                          bool characteristic, double& p, Vector<Dim>& v) {
-    if (characteristic && rho > 0 && c > 0) v += ((p - outerPressure) / (rho * c)) * n;
+void applySurfacePressure(double outerPressure, const Vector<Dim>& n, double c, bool characteristic,
+                          double& p, double& rho, double* e, Vector<Dim>& v) {
+    if (characteristic && rho > 0 && c > 0) {
+        v += ((p - outerPressure) / (rho * c)) * n;
+        const double rhoNew = rho + (outerPressure - p) / (c * c);
+        if (rhoNew > 0) {
+            if (e) {
+                const double pMean = 0.5 * (p + outerPressure), rhoMean = 0.5 * (rho + rhoNew);
+                *e += pMean / (rhoMean * rhoMean) * (rhoNew - rho);
+            }
+            rho = rhoNew;
+        }
+    }
     p = outerPressure;
 }
 
