@@ -29,8 +29,9 @@ namespace mfdyn::fpm {
 // w = rho c v.n + p kept) and, the Euler part's entropy wave w1 = rho - p / c^2 (its (5.11), speed 0)
 // kept too, rho <- rho + (p_o - p) / c^2 with e <- e + p_m / rho_m^2 (rho_new - rho) (the part's
 // de = p drho / rho^2, at the means of the old and new p and rho), so that (rho, e) stays on the
-// isentrope through the new p (an ideal gas pinned at p_o otherwise runs its e below 0 as it
-// expands). A density that would not stay positive is left alone. e may be null (no energy).
+// isentrope through the new p: the state the equation of state reads (c^2, g) stays that of the
+// pinned p, as the part's own update keeps it in the interior. A density that would not stay
+// positive is left alone. e may be null (no energy).
 template <int Dim>
 void applySurfacePressure(double outerPressure, const Vector<Dim>& n, double c, bool characteristic,
                           double& p, double& rho, double* e, Vector<Dim>& v) {
