@@ -79,7 +79,8 @@ private:
     const NeighbourList& shiftedRows();
     void readFreeSurface();
     // The free-surface conditions on the particles detected this step: p = p_o, and with the shear
-    // part S n = 0 (S <- P S P - tr(P S P)/(d - 1) P, P = I - n n^T), so that sigma n = -p_o n.
+    // part S n = 0 (S <- P S P - tr(P S P)/(d - 1) P, P = I - n n^T), so that sigma n = -p_o n;
+    // with velocity characteristic, after a stage, also v, rho, e (fpm/FreeSurfaceCondition.hpp).
     void applyFreeSurface(std::optional<fpm::Subsystem> stage);  // the stage just run, or none (step start)
     // particleManagement { ... }: merging and insertion after the motion (fpm/ParticleManagement.hpp),
     // the solver's per-particle arrays carried over to the new particles.

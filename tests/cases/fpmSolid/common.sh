@@ -72,3 +72,13 @@ energyRises() {
         !k || !z { exit 1 } n++ && $k - prev > worst { worst = $k - prev; t = $1 } { prev = $k; if (n == 1) { e0 = $k; l0 = $z } lz = $z }
         END { print worst + 0, (t == "" ? "none" : t), e0, prev, l0, lz }' "$1"
 }
+# runToTheEnd <tutorial> <case>: a clean copy of the tutorial run as shipped, particleGen then fpmSolid;
+# fpmSolid may stop early (the validation tests print their figures first): its exit status is left
+# in $status and the first line of its diagnosis in $diagnosis.
+runToTheEnd() {
+    copyTutorial "$1" "$2"
+    run "$2" particleGen
+    status=0
+    fpmSolid -case "$2" > "$2/log.fpmSolid" 2>&1 || status=$?
+    diagnosis=$(grep -m1 "Error" "$2/log.fpmSolid" | cut -c1-300 || true)
+}

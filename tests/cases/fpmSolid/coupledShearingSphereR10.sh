@@ -8,11 +8,7 @@
 # The figures are printed before any assertion. Validation label: minutes.
 source "$(dirname "$0")/common.sh"
 c="$WORK/coupledShearingSphere"
-copyTutorial coupledShearingSphere "$c"
-run "$c" particleGen
-status=0
-fpmSolid -case "$c" > "$c/log.fpmSolid" 2>&1 || status=$?
-diagnosis=$(grep -m1 "Error" "$c/log.fpmSolid" | cut -c1-300 || true)
+runToTheEnd coupledShearingSphere "$c"
 s="$c/postProcessing/stress/0/fieldMinMax.csv"
 e="$c/postProcessing/shape/0/bodyExtents.csv"
 sigma=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "maxPrincipalStress_max") k = i; next }

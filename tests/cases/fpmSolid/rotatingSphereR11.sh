@@ -5,10 +5,7 @@
 # boundedness). The figures are printed before any assertion. Validation label: minutes.
 source "$(dirname "$0")/common.sh"
 c="$WORK/rotatingSphere"
-copyTutorial rotatingSphere "$c"
-run "$c" particleGen
-status=0
-fpmSolid -case "$c" > "$c/log.fpmSolid" 2>&1 || status=$?
+runToTheEnd rotatingSphere "$c"
 e="$c/postProcessing/shape/0/bodyExtents.csv"
 q="$c/postProcessing/budget/0/conservedQuantities.csv"
 extrema=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "r") k = i; next }
@@ -19,7 +16,7 @@ extrema=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "r") k = i; nex
 read -r t1 t2 t3 <<< "$extrema"
 budget=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) { if ($i == "totalEnergy") k = i; if ($i == "angularMomentum_z") z = i } next }
     NR == 2 { e0 = $k; l0 = $z } { e = $k; l = $z; t = $1 } END { print e0, e, l0, l, t }' "$q")
-echo "R11: in-plane radius extrema at t = $t1, $t2, $t3 (1.1, 2.0, 2.9 +- 0.2); energy, L_z (start, end) and the end time: $budget (exit $status)"
+echo "R11: in-plane radius extrema at t = $t1, $t2, $t3 (1.1, 2.0, 2.9 +- 0.2); energy, L_z (start, end) and the end time: $budget (exit $status)${diagnosis:+: $diagnosis}"
 for pair in "$t1 1.1" "$t2 2.0" "$t3 2.9"; do
     read -r got want <<< "$pair"
     [ "$got" != none ] && awk -v t="$got" -v w="$want" 'BEGIN { exit !(t >= w - 0.2 && t <= w + 0.2) }' ||
