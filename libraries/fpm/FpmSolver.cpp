@@ -5,8 +5,11 @@
 // rotation part (§3.1). Built: the rotation part (§3.4) with prescribed or frozen particle motion
 // (the rotation-only test, §4.9, R4 of §4b) and the Euler part (§3.2, fpm/EulerPart.hpp: the
 // pressure-gradient upwinding) on frozen particles (the Euler validation, §4.4, R6) or moving them
-// with its upwind velocity v_uw (the thesis's Euler-only runs, R6L); the shear part is refused at
-// its entry until it is built. A step:
+// with its upwind velocity v_uw (the thesis's Euler-only runs, R6L), the shear part (§3.3,
+// fpm/ShearPart.hpp: dimensional upwinding, the particles moved with its v_D), and the free surface
+// (meshfreeOperators/SurfaceDetection, fpm/FreeSurfaceCondition.hpp: the thesis's p = p_o and
+// S n = 0, or sigma n = -p_o n on the total stress). A step (the outline of the first build; the
+// shear stage and the free surface's conditions after each stage are in step()):
 //
 //     neighbours (cell list, radius h, self included; (1 + maxShift) h for the Euler part's
 //     shifted fits when a particle is shifted) -> fit (weights once per particle, applied to the
@@ -19,7 +22,7 @@
 //     close pairs merged, particles inserted into holes, fpm/ParticleManagement.cpp)
 //
 // constant/fpmProperties:
-//     subsystems (euler rotation);      // euler | shear | rotation (shear is not built); the order
+//     subsystems (euler rotation);      // euler | shear | rotation; the order
 //                                       // is the thesis's (euler before rotation) whatever is written
 //     euler      { delta 0.3; maxShift 0.5; }  // the shift l = delta c (delta in s), or
 //                                       // { deltaFraction 0.2; }: l = 0.2 h; l <= maxShift h
@@ -203,6 +206,20 @@ KeywordSchema FpmSolver<Dim>::freeSurfaceKeywords() {
               "sqrt(2 (1 - 1/d) mu rho) normal in the shear part; and the Euler part's entropy wave "
               "rho - p / c^2: rho += (p_o - p) / c^2, e += p drho / rho^2)")
         .orDefault("unchanged")
+        .word("condition", {"thesis", "traction"},
+              "thesis: p = p_o and S n = 0, each part its own (the thesis's; it also sets the stress along "
+              "the surface to -p_o); traction: sigma n = -p_o n on the total stress sigma = S - p I, its "
+              "tangential block kept and re-split into p and S, after the shear and the Euler stage (a "
+              "bent plate's surface carries its bending stress; fpm/FreeSurfaceCondition.hpp)")
+        .orDefault("thesis")
+        .scalar("edgeAngle", "deg",
+                "with condition traction: a surface particle whose row holds a surface normal more than "
+                "this from its own is at an edge or corner (SurfaceDetection::edges) and takes the thesis's "
+                "conditions (p = p_o, S n = 0: sigma = -p_o I in-plane at a 2D corner, where both faces are "
+                "free); 0: no edges")
+        .atLeast(0)
+        .lessThan(180)
+        .orDefault(0)
         .scalar("offsetThreshold", "-", "the centre-of-mass offset above which a particle is a candidate")
         .atLeast(0)
         .lessThan(1)
@@ -818,7 +835,12 @@ void FpmSolver<Dim>::step(double dt) {
         gradV_ = fit_.gradientOf(v_);
         neighboursPerParticle_ = n ? double(rows_.offsets()[n]) / double(n) : 0.0;
         if (surface_) {  // on the rows within h (growSupport's rows reach further: detection takes h)
+            markVelocityHeld(time().value() + dt);
             surface_->detect(x_, rows_, h_);
+            if (edgeAngle_ > 0) {
+                edge_ = surface_->edges(rows_, edgeAngle_);
+                edgeParticles_ += std::size_t(std::count(edge_.begin(), edge_.end(), 1));
+            }
             surfaceParticles_ += surface_->surfaceCount();
             applyFreeSurface(std::nullopt);  // the step starts from a state that satisfies the conditions
         }
@@ -848,11 +870,12 @@ void FpmSolver<Dim>::step(double dt) {
                 rotationStage(dts);
                 break;
         }
-        // the velocity conditions on what the stage left (v at the step's end time: a Dirichlet
-        // value holds on the boundary particles throughout)
+        // the free surface's conditions, then the velocity conditions on what the stage left (v at
+        // the step's end time: a Dirichlet value holds on the boundary particles throughout, the
+        // surface's characteristic velocity included: a clamped surface particle stays clamped)
+        if (stage.part != fpm::Subsystem::rotation && surface_) applyFreeSurface(stage.part);
         if (stage.part != fpm::Subsystem::rotation && !boundaryConditions_.empty())
             boundaryConditions_.constrainVelocity(*owner_, v_, time().value() + dt);
-        if (stage.part != fpm::Subsystem::rotation && surface_) applyFreeSurface(stage.part);
     }
     {
         // V <- V (1 + dt div v): the Euler part's div v_uw where it runs (so that rho V stays the
@@ -1012,9 +1035,25 @@ void FpmSolver<Dim>::readFreeSurface() {
     outerPressure_ = f.scalar("pressure");
     surfaceTraction_ = f.flag("traction");
     characteristicSurface_ = f.word("velocity") == "characteristic";
+    totalStressSurface_ = f.word("condition") == "traction";
+    edgeAngle_ = f.scalar("edgeAngle") * std::acos(-1.0) / 180.0;
+    if (edgeAngle_ > 0 && !totalStressSurface_)
+        throw settings_.dictionary("freeSurface")
+            .error("edgeAngle",
+                   "edgeAngle picks the particles that take the thesis's conditions under "
+                   "condition traction (condition thesis applies them everywhere)");
     if (!euler_ && !shear_)
         throw properties_.error("freeSurface",
                                 "freeSurface conditions act on p and S: subsystems with euler or shear");
+    if (totalStressSurface_ && !(euler_ && shear_))
+        throw settings_.dictionary("freeSurface")
+            .error("condition",
+                   "condition traction acts on the total stress S - p I: subsystems with both "
+                   "shear and euler (or condition thesis)");
+    if (totalStressSurface_ && !surfaceTraction_)
+        throw settings_.dictionary("freeSurface")
+            .error("traction",
+                   "condition traction is the traction condition: traction yes (or condition thesis)");
 }
 
 // p = p_o and S n = 0 on the surface particles (fpm/FreeSurfaceCondition.hpp). After a part's stage,
@@ -1029,14 +1068,31 @@ void FpmSolver<Dim>::applyFreeSurface(std::optional<fpm::Subsystem> stage) {
     const bool projectStress = shear_ && surfaceTraction_;
     const bool eulerKick = characteristicSurface_ && stage == fpm::Subsystem::euler;
     const bool shearKick = characteristicSurface_ && stage == fpm::Subsystem::shear;
+    if (totalStressSurface_) {
+        // c of the last Euler stage (none before the first: the normal impedance is the shear part's)
+        const bool kick = characteristicSurface_ && stage.has_value();
+        const bool soundSpeed = c_.size() == x_.size();
+        parallelFor(x_.size(), [&](std::size_t i) {
+            if (!flag[i] || (!edge_.empty() && edge_[i])) return;
+            if (normal[i].squaredNorm() > 0)
+                fpm::applySurfaceStress<Dim>(outerPressure_, normal[i], deviatorWeight_, mu_[i],
+                                             soundSpeed ? c_[i] : 0.0, kick && !velocityHeld_[i], p[i], S[i],
+                                             rho_[i], e_ ? &(*e_)[i] : nullptr, v_[i]);
+            else
+                p[i] = outerPressure_;  // no normal: the pressure condition alone
+        });
+        if (edge_.empty()) return;
+    }
+    // the thesis's pair (everywhere, or at the edges under condition traction)
     parallelFor(x_.size(), [&](std::size_t i) {
-        if (!flag[i]) return;
+        if (!flag[i] || (totalStressSurface_ && !edge_[i])) return;
         const bool oriented = normal[i].squaredNorm() > 0;
-        fpm::applySurfacePressure<Dim>(outerPressure_, normal[i], eulerKick ? c_[i] : 0.0, eulerKick && oriented,
-                                       p[i], rho_[i], e_ ? &(*e_)[i] : nullptr, v_[i]);
+        fpm::applySurfacePressure<Dim>(outerPressure_, normal[i], eulerKick ? c_[i] : 0.0,
+                                       eulerKick && oriented && !velocityHeld_[i], p[i], rho_[i],
+                                       e_ ? &(*e_)[i] : nullptr, v_[i]);
         if (projectStress && oriented)
-            fpm::applySurfaceTraction<Dim>(normal[i], mu_.empty() ? 0.0 : mu_[i], rho_[i], shearKick, S[i],
-                                           v_[i]);
+            fpm::applySurfaceTraction<Dim>(normal[i], mu_.empty() ? 0.0 : mu_[i], rho_[i],
+                                           shearKick && !velocityHeld_[i], S[i], v_[i]);
     });
 }
 
@@ -1065,6 +1121,21 @@ void FpmSolver<Dim>::readManagement() {
               "; " +
               (o.merge ? "merging of pairs closer than " + formatKeywordNumber(o.mergeDistance) + " h"
                        : std::string("no merging")));
+}
+
+// The particles whose velocity a boundary condition sets (any component): those the constraint
+// changes on a probe velocity no condition leaves alone. On them the free surface's characteristic
+// velocity and its entropy wave are not applied (the condition, not the surface, sets v there).
+template <int Dim>
+void FpmSolver<Dim>::markVelocityHeld(double t) {
+    velocityHeld_.assign(x_.size(), 0);
+    if (boundaryConditions_.empty() || !characteristicSurface_) return;
+    Vector<Dim> probe;
+    const double components[3] = {1.0e10, 1.4142135623730951e10, 3.141592653589793e10};
+    for (int d = 0; d < Dim; ++d) probe(d) = components[d];
+    std::vector<Vector<Dim>> v(x_.size(), probe);
+    boundaryConditions_.constrainVelocity(*owner_, v, t);
+    for (std::size_t i = 0; i < v.size(); ++i) velocityHeld_[i] = v[i] != probe;
 }
 
 // Merging and insertion (fpm/ParticleManagement.hpp) on the moved particles; the solver's own
@@ -1418,11 +1489,20 @@ std::vector<std::string> FpmSolver<Dim>::summary(double) const {
         lines.push_back(line);
     }
     if (surface_) {
-        std::snprintf(line, sizeof line,
-                      "free surface         %.1f particles per step detected (p = %.4g%s), normals %s",
-                      time().timeIndex() > 0 ? double(surfaceParticles_) / double(time().timeIndex()) : 0.0,
-                      outerPressure_, shear_ ? ", S n = 0" : "",
-                      settings_.nested("freeSurface").word("normals").c_str());
+        const double steps = time().timeIndex() > 0 ? double(time().timeIndex()) : 1.0;
+        std::snprintf(
+            line, sizeof line, "free surface         %.1f particles per step detected (%s), normals %s%s",
+            double(surfaceParticles_) / steps,
+            totalStressSurface_
+                ? ("sigma n = -p_o n, p_o = " + formatKeywordNumber(outerPressure_) +
+                   ", the tangential stress kept")
+                      .c_str()
+                : ("p = " + formatKeywordNumber(outerPressure_) + (shear_ ? ", S n = 0" : "")).c_str(),
+            settings_.nested("freeSurface").word("normals").c_str(),
+            edgeAngle_ > 0 ? (", " + formatKeywordNumber(double(edgeParticles_) / steps) +
+                              " per step at edges (p = p_o, S n = 0)")
+                                 .c_str()
+                           : "");
         lines.push_back(line);
     }
     if (management_) {

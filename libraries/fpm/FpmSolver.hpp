@@ -82,6 +82,7 @@ private:
     // part S n = 0 (S <- P S P - tr(P S P)/(d - 1) P, P = I - n n^T), so that sigma n = -p_o n;
     // with velocity characteristic, after a stage, also v, rho, e (fpm/FreeSurfaceCondition.hpp).
     void applyFreeSurface(std::optional<fpm::Subsystem> stage);  // the stage just run, or none (step start)
+    void markVelocityHeld(double t);  // velocityHeld_: the particles a velocity condition sets
     // particleManagement { ... }: merging and insertion after the motion (fpm/ParticleManagement.hpp),
     // the solver's per-particle arrays carried over to the new particles.
     void readManagement();
@@ -156,6 +157,11 @@ private:
     double outerPressure_ = 0;
     bool surfaceTraction_ = true;
     bool characteristicSurface_ = false;  // freeSurface { velocity characteristic; }
+    bool totalStressSurface_ = false;     // freeSurface { condition traction; }
+    std::vector<char> velocityHeld_;      // per particle: a boundary condition sets its velocity
+    double edgeAngle_ = 0;                // freeSurface { edgeAngle; } in radians (0: none)
+    std::vector<unsigned char> edge_;     // the surface particles at edges (SurfaceDetection::edges)
+    std::size_t edgeParticles_ = 0;       // summed over the steps
     // instabilityCheck { pressure (lo hi); stress s; }: a state outside is stopped as an instability.
     bool checkPressure_ = false;
     double pressureLow_ = 0, pressureHigh_ = 0, stressBound_ = 0;

@@ -229,6 +229,24 @@ void SurfaceDetection<Dim>::detect(const std::vector<Vector<Dim>>& x, const Neig
     surfaceCount_ = LocalReduce::sum<std::size_t>(n, [&](std::size_t i) { return std::size_t(surface_[i]); });
 }
 
+template <int Dim>
+std::vector<unsigned char> SurfaceDetection<Dim>::edges(const NeighbourList& rows, double angle) const {
+    const std::size_t n = surface_.size();
+    std::vector<unsigned char> edge(n, 0);
+    const double cosAngle = std::cos(angle);
+    parallelFor(n, [&](std::size_t i) {
+        if (!surface_[i] || normal_[i].squaredNorm() == 0.0) return;
+        for (const auto j : rows[i]) {
+            if (j == i || !surface_[j] || normal_[j].squaredNorm() == 0.0) continue;
+            if (normal_[i].dot(normal_[j]) < cosAngle) {
+                edge[i] = 1;
+                return;
+            }
+        }
+    });
+    return edge;
+}
+
 template class SurfaceDetection<1>;
 template class SurfaceDetection<2>;
 template class SurfaceDetection<3>;

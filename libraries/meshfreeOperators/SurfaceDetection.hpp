@@ -114,6 +114,12 @@ public:
     const std::vector<Vector<Dim>>& normal() const { return normal_; }
     // Test 1's c_i, every particle.
     const std::vector<double>& offsetRatio() const { return offsetRatio_; }
+    // After detect: 1 for a surface particle near an edge or a corner, where one normal cannot
+    // describe the surface: a surface particle of its row (the rows given to detect) has a normal
+    // more than `angle` (radians) from its own. A flat face 2 h from an edge has none; a sphere of
+    // radius R, normals up to about h / R apart (plus the normals' own error), so the angle is
+    // the case's (at a plate's 90 degree corner the normals turn by 45 degrees over a spacing).
+    std::vector<unsigned char> edges(const NeighbourList& rows, double angle) const;
 
     static std::string normalsName(Normals normals);
     // By name (centreOfMass, covariance, planeFit, smoothedCovariance); an unknown name throws,

@@ -6,8 +6,8 @@
 int main(int argc, char** argv) {
     const mfdyn::ApplicationInfo info{
         "fpmSolid",
-        "Finite pointset method for hypo-elastic solids (constant/fpmProperties); so far the rotation part "
-        "with prescribed or frozen particle motion.",
+        "Finite pointset method for hypo-elastic solids (constant/fpmProperties): the Euler, shear and "
+        "rotation parts of von Nida 2005, split, with free surfaces and boundary conditions.",
         {},
         {},
         true,

@@ -1,6 +1,6 @@
 # Bad fpmProperties from a case directory: an unknown keyword, an unknown subsystem or splitting,
 # the shear part's conditions and the Euler part's conditions (frozen particles, an equation of state, one
-# delta) are each an input error at their line (file:line, the valid choices),
+# delta), the free surface's traction condition's (both parts; edgeAngle with it only) are each an input error at their line (file:line, the valid choices),
 # exit status 1, the particles untouched and no time directory written.
 source "$(dirname "$0")/common.sh"
 base="$WORK/base"
@@ -52,6 +52,10 @@ refused badOrder "^order" "expected a value" \
     sed -i 's/^order .*/order 3;/' constant/fpmProperties
 refused initialStateWithPrescribed "^initialState" "velocity prescribed sets v itself: initialState is for" \
     sh -c 'echo "initialState { type rigidRotation; omega (0 0 -1); }" >> constant/fpmProperties'
+refused tractionWithoutShear "^freeSurface" "condition traction acts on the total stress S - p I: subsystems with both shear and euler" \
+    sh -c "sed -i 's/^subsystems .*/subsystems (euler);/; s/^motion .*/motion { velocity frozen; }/' constant/fpmProperties && echo 'freeSurface { pressure 0; condition traction; }' >> constant/fpmProperties"
+refused edgeAngleWithThesis "^freeSurface" "edgeAngle picks the particles that take the thesis's conditions under condition traction" \
+    sh -c "sed -i 's/^subsystems .*/subsystems (euler);/; s/^motion .*/motion { velocity frozen; }/' constant/fpmProperties && echo 'freeSurface { pressure 0; edgeAngle 30; }' >> constant/fpmProperties"
 # constant/materialProperties (optional) through the shared MaterialSet: a constitutive law is not
 # fpmSolid's model (an equation of state and a strength law are).
 m="$WORK/constitutiveLaw"

@@ -1,6 +1,7 @@
 // The free-surface conditions of fpm/FreeSurfaceCondition.hpp: the state they leave (p = p_o, S n = 0,
 // S traceless with its tangential part kept) and, in the characteristic variant, the outgoing
-// characteristic w_out = Z v - sigma n of each direction unchanged by them.
+// characteristic w_out = Z v - sigma n of each direction unchanged by them; and the traction condition on
+// the total stress (sigma n = -p_o n, the tangential stress kept).
 #include "fpm/FreeSurfaceCondition.hpp"
 
 #include <gtest/gtest.h>
@@ -61,7 +62,8 @@ TEST(FreeSurfaceCondition, CharacteristicPressureOnAnIdealGasStaysNearItsIsentro
     double rho = 1.0, e = 1.05 / ((gamma - 1.0) * rho), p = 1.05;
     const double entropyBefore = p / std::pow(rho, gamma);
     Vector<2> v = Vector<2>::Zero();
-    fpm::applySurfacePressure<2>(pOuter, Vector<2>(0.0, 1.0), std::sqrt(gamma * p / rho), true, p, rho, &e, v);
+    fpm::applySurfacePressure<2>(pOuter, Vector<2>(0.0, 1.0), std::sqrt(gamma * p / rho), true, p, rho, &e,
+                                 v);
     const double pFromState = (gamma - 1.0) * rho * e;
     const double q = 0.05;
     EXPECT_NEAR(pFromState, pOuter, q * q * pOuter);
@@ -116,4 +118,76 @@ TEST(FreeSurfaceCondition, TwoDimensionalNormalImpedanceIsSqrtMuRho) {
     EXPECT_NEAR(S(0, 0), 0.0, 1e-15);
     EXPECT_NEAR(S(0, 1), 0.0, 1e-15);
     EXPECT_NEAR(S(1, 1), 0.0, 1e-15);  // traceless with S n = 0: nothing left in 2D
+}
+
+TEST(FreeSurfaceCondition, TotalStressTractionKeepsTheTangentialStress3D) {
+    // sigma n = -p_o n after, sigma's tangential block P sigma P unchanged, S traceless, p = -tr sigma / 3
+    const Vector<3> n = unitNormal();
+    const double pOuter = 0.7;
+    SymmTensor<3> S = someDeviator();
+    double p = 2.5, rho = 1.2;
+    const Tensor<3> I = Tensor<3>::Identity(), P = I - n * n.transpose();
+    const Tensor<3> sigmaBefore = S.full() - p * I;
+    Vector<3> v(0.5, 0.0, -0.5);
+    fpm::applySurfaceStress<3>(pOuter, n, 1.0 / 3.0, 50.0, 4.0, false, p, S, rho, nullptr, v);
+    const Tensor<3> sigma = S.full() - p * I;
+    EXPECT_NEAR((sigma * n + pOuter * n).norm(), 0.0, 1e-14);
+    EXPECT_NEAR((P * sigma * P - P * sigmaBefore * P).norm(), 0.0, 1e-14);
+    EXPECT_NEAR(S.full().trace(), 0.0, 1e-14);
+    EXPECT_NEAR(p, -sigma.trace() / 3.0, 1e-14);
+    EXPECT_EQ(v, Vector<3>(0.5, 0.0, -0.5));
+    EXPECT_EQ(rho, 1.2);
+}
+
+TEST(FreeSurfaceCondition, TotalStressTractionInPlaneStrainKeepsSigmaZ) {
+    // deviator three in 2D: S_zz = -tr S, sigma_zz = -p + S_zz is tangential to the surface and kept;
+    // a plate's top surface (n = y) keeps its bending stress sigma_xx
+    const Vector<2> n(0.0, 1.0);
+    SymmTensor<2> S;
+    S(0, 0) = 3.0;
+    S(1, 1) = 0.5;
+    S(0, 1) = 1.0;
+    double p = -1.0, rho = 1000.0;
+    const double sigmaXX = S(0, 0) - p, sigmaZZ = -(S(0, 0) + S(1, 1)) - p;
+    Vector<2> v = Vector<2>::Zero();
+    fpm::applySurfaceStress<2>(0.0, n, 1.0 / 3.0, 7e5, 57.0, false, p, S, rho, nullptr, v);
+    EXPECT_NEAR(S(0, 0) - p, sigmaXX, 1e-13);
+    EXPECT_NEAR(-(S(0, 0) + S(1, 1)) - p, sigmaZZ, 1e-13);
+    EXPECT_NEAR(S(1, 1) - p, 0.0, 1e-13);
+    EXPECT_NEAR(S(0, 1), 0.0, 1e-15);
+    EXPECT_NEAR(p, -(sigmaXX + sigmaZZ) / 3.0, 1e-13);
+}
+
+TEST(FreeSurfaceCondition, CharacteristicTotalStressKeepsTheFullSystemsInvariants) {
+    // w_out = Z v - sigma n with Z = rho c_L along n (rho c_L^2 = rho c^2 + 4/3 mu in 3D) and
+    // sqrt(mu rho) along the surface; the entropy wave rho - p / c^2 kept
+    const Vector<3> n = unitNormal();
+    const double mu = 50.0, c = 4.0, pOuter = 0.3;
+    SymmTensor<3> S = someDeviator();
+    double p = 2.5, rho = 1.2;
+    const double rho0 = rho, p0 = p;
+    const double zNormal = std::sqrt(rho * (rho * c * c + 4.0 / 3.0 * mu)), zShear = std::sqrt(mu * rho);
+    const Tensor<3> I = Tensor<3>::Identity(), P = I - n * n.transpose();
+    const Vector<3> tractionBefore = (S.full() - p * I) * n;
+    const Vector<3> v0(0.5, 0.0, -0.5);
+    Vector<3> v = v0;
+    fpm::applySurfaceStress<3>(pOuter, n, 1.0 / 3.0, mu, c, true, p, S, rho, nullptr, v);
+    const Vector<3> traction = (S.full() - p * I) * n;
+    EXPECT_NEAR(zNormal * n.dot(v) - n.dot(traction) - (zNormal * n.dot(v0) - n.dot(tractionBefore)), 0.0,
+                1e-13);
+    EXPECT_NEAR((zShear * P * v - P * traction - (zShear * P * v0 - P * tractionBefore)).norm(), 0.0, 1e-13);
+    EXPECT_NEAR(rho - p / (c * c), rho0 - p0 / (c * c), 1e-14);
+    EXPECT_GT((v - v0).norm(), 0.1);
+}
+
+TEST(FreeSurfaceCondition, TotalStressWithoutShearStiffnessIsThePressureCondition) {
+    const Vector<3> n = unitNormal();
+    SymmTensor<3> S{};
+    double p = 2.5, rho = 1.2, pRef = 2.5, rhoRef = 1.2;
+    Vector<3> v(0.5, 0.0, -0.5), vRef = v;
+    fpm::applySurfaceStress<3>(0.3, n, 1.0 / 3.0, 0.0, 4.0, true, p, S, rho, nullptr, v);
+    fpm::applySurfacePressure<3>(0.3, n, 4.0, true, pRef, rhoRef, nullptr, vRef);
+    EXPECT_EQ(p, pRef);
+    EXPECT_EQ(rho, rhoRef);
+    EXPECT_EQ(v, vRef);
 }

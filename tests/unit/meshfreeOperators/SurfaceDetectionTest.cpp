@@ -389,5 +389,42 @@ TEST(SurfaceDetection, segmentEnds) {
     EXPECT_EQ(detector.normal().back()[0], 1.0);
 }
 
+// edges(): on a plate-like rectangle of 101 x 11 sites (the FPM oscillating plate's lattice, h = 2.5
+// spacings, smoothedCovariance normals) the corners' surface particles are edges at 30 degrees and a
+// face's particles more than 2 h + a from a corner are not (their normals and their surface
+// neighbours' are all exact there); every edge particle lies within 2 h + a of a corner.
+TEST(SurfaceDetection, edgesAtTheCornersOfARectangle) {
+    const int nx = 100, ny = 10;
+    const double a = 0.002, h = 2.5 * a;
+    const auto inside = [&](const std::array<int, 2>& c) {
+        return c[0] >= 0 && c[0] <= nx && c[1] >= 0 && c[1] <= ny;
+    };
+    const Sites<2> sites = sitesOf<2>(nx + 1, inside);
+    const std::vector<Vector<2>> x = positions<2>(sites, a);
+    const NeighbourList rows = rowsOf(x, h, true);
+    Detector<2> detector;
+    detector.detect(x, rows, h);
+    const std::vector<unsigned char> edge = detector.edges(rows, 30.0 * std::acos(-1.0) / 180.0);
+    ASSERT_EQ(edge.size(), x.size());
+    const double reach = 2 * h + a;
+    std::size_t edges = 0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        const auto& c = sites[i];
+        const bool corner = (c[0] == 0 || c[0] == nx) && (c[1] == 0 || c[1] == ny);
+        double nearest = 1e300;
+        for (int cx : {0, nx})
+            for (int cy : {0, ny}) nearest = std::min(nearest, std::hypot((c[0] - cx) * a, (c[1] - cy) * a));
+        if (corner) EXPECT_TRUE(edge[i]) << "corner site (" << c[0] << ", " << c[1] << ")";
+        if (edge[i]) {
+            ++edges;
+            EXPECT_TRUE(detector.surface()[i]);
+            EXPECT_LE(nearest, reach + 1e-12) << "edge at site (" << c[0] << ", " << c[1] << ")";
+        }
+        if (detector.surface()[i] && nearest > reach) EXPECT_FALSE(edge[i]);
+    }
+    std::printf("edges at 30 degrees: %zu of %zu surface particles\n", edges, detector.surfaceCount());
+    EXPECT_GE(edges, 4u);
+}
+
 }  // namespace
 }  // namespace mfdyn
