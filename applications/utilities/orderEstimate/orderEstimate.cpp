@@ -63,6 +63,7 @@
 #include "core/Error.hpp"
 #include "core/KeywordSchema.hpp"
 #include "core/Log.hpp"
+#include "core/TimeSelection.hpp"
 #include "functionObjects/Interpolation.hpp"
 #include "kernels/Kernel.hpp"
 #include "particles/ParticleSetBase.hpp"
@@ -217,42 +218,17 @@ std::vector<CommonTime> commonTimes(const std::array<Run, 3>& runs) {
     return common;
 }
 
-// The common times chosen on the command line: all, the latest, one value, or a range a:b
-// (either end may be left open), as `sample` chooses.
+// The common times chosen on the command line, as `sample` chooses (core/TimeSelection.hpp).
 std::vector<CommonTime> chosenTimes(const Arguments& args, const std::vector<CommonTime>& all) {
-    if (args.has("time") && args.has("latestTime")) throw InputError("give -time or -latestTime, not both");
-    if (args.has("latestTime")) return {all.back()};
-    const auto spec = args.find("time");
-    if (!spec) return all;
-    const auto parse = [&](const std::string& text, double fallback) {
-        if (text.empty()) return fallback;
-        std::size_t used = 0;
-        double v = 0;
-        try {
-            v = std::stod(text, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used != text.size()) throw InputError("-time '" + *spec + "': '" + text + "' is not a number");
-        return v;
-    };
+    std::vector<double> values;
+    std::vector<std::string> names;
+    for (const auto& t : all) {
+        values.push_back(t.value);
+        names.push_back(t.names[0]);
+    }
     std::vector<CommonTime> chosen;
-    if (const auto colon = spec->find(':'); colon != std::string::npos) {
-        const double lo = parse(spec->substr(0, colon), -HUGE_VAL),
-                     hi = parse(spec->substr(colon + 1), HUGE_VAL);
-        const auto tol = [](double t) { return timeTolerance * std::max(1.0, std::abs(t)); };
-        for (const auto& t : all)
-            if (t.value >= lo - tol(lo) && t.value <= hi + tol(hi)) chosen.push_back(t);
-    } else {
-        const double value = parse(*spec, 0.0);
-        for (const auto& t : all)
-            if (sameTime(t.value, value)) chosen.push_back(t);
-    }
-    if (chosen.empty()) {
-        std::string have;
-        for (const auto& t : all) have += " " + t.names[0];
-        throw InputError("-time " + *spec + " matches no time of all three runs; they have:" + have);
-    }
+    for (std::size_t k : selectTimes(args, values, names, timeTolerance, "of all three runs"))
+        chosen.push_back(all[k]);
     return chosen;
 }
 

@@ -22,6 +22,7 @@
 #include "core/Application.hpp"
 #include "core/Case.hpp"
 #include "core/Error.hpp"
+#include "core/TimeSelection.hpp"
 #include "functionObjects/CsvFile.hpp"
 #include "functionObjects/Interpolation.hpp"
 #include "functionObjects/SamplingSet.hpp"
@@ -37,43 +38,18 @@ using namespace mfdyn;
 
 namespace {
 
-// The times chosen on the command line: all, the latest, one value, or a range a:b (either
-// end may be left open).
+// The times chosen on the command line (core/TimeSelection.hpp).
 std::vector<TimeDirectory> chosenTimes(const Arguments& args, const Case& runCase) {
-    if (args.has("time") && args.has("latestTime")) throw InputError("give -time or -latestTime, not both");
     const auto all = runCase.timeDirectories();
     if (all.empty()) throw InputError("no time directories in case '" + runCase.root().string() + "'");
-    if (args.has("latestTime")) return {all.back()};
-    const auto spec = args.find("time");
-    if (!spec) return all;
-    const auto number = [&](const std::string& text, double fallback) {
-        if (text.empty()) return fallback;
-        std::size_t used = 0;
-        double v = 0;
-        try {
-            v = std::stod(text, &used);
-        } catch (const std::exception&) {
-            used = 0;
-        }
-        if (used != text.size()) throw InputError("-time '" + *spec + "': '" + text + "' is not a number");
-        return v;
-    };
+    std::vector<double> values;
+    std::vector<std::string> names;
+    for (const auto& t : all) {
+        values.push_back(t.value);
+        names.push_back(t.name);
+    }
     std::vector<TimeDirectory> chosen;
-    if (const auto colon = spec->find(':'); colon != std::string::npos) {
-        const double lo = number(spec->substr(0, colon), -HUGE_VAL),
-                     hi = number(spec->substr(colon + 1), HUGE_VAL);
-        // A relative tolerance, so that 0.1:0.3 includes the directory written as 0.30000000000000004.
-        const auto tol = [](double t) { return 1e-12 * std::max(1.0, std::abs(t)); };
-        for (const auto& t : all)
-            if (t.value >= lo - tol(lo) && t.value <= hi + tol(hi)) chosen.push_back(t);
-    } else if (auto t = runCase.findTime(number(*spec, 0.0))) {
-        chosen.push_back(*t);
-    }
-    if (chosen.empty()) {
-        std::string have;
-        for (const auto& t : all) have += " " + t.name;
-        throw InputError("-time " + *spec + " matches no time directory; there are:" + have);
-    }
+    for (std::size_t k : selectTimes(args, values, names, 1e-12, "directory")) chosen.push_back(all[k]);
     return chosen;
 }
 

@@ -51,6 +51,6 @@ writeDict "$study" "$goodDict"
 mv "$study/fine/0.7" "$study/fine/0"
 status=0
 orderEstimate -case "$study" -time 0.9 > "$WORK/log.time" 2>&1 || status=$?
-[ "$status" = 1 ] && grep -qF -- "-time 0.9 matches no time of all three runs; they have: 0" "$WORK/log.time" ||
+[ "$status" = 1 ] && grep -qF -- "-time 0.9 matches no time of all three runs; there are: 0" "$WORK/log.time" ||
     fail "-time 0.9: status $status: $(cat "$WORK/log.time")"
 pass "-time of a time not in all runs: $(grep Error "$WORK/log.time")"
