@@ -352,6 +352,13 @@ KeywordSchema FpmSolver<Dim>::keywords() {
         .greaterThan(0)
         .lessThan(1)
         .orDefault(1e-6)
+        .integer("shiftedFitOrder", "-",
+                 "the basis of the upwind parts' fits at the shifted points (default: order); 1 with order "
+                 "2 keeps the quadratic central fit but a linear one at points up to maxShift h beyond a "
+                 "surface particle, where a quadratic extrapolates (the rotating sphere's README)")
+        .atLeast(1)
+        .atMost(2)
+        .optional()
         .dictionary(
             "euler",
             "the Euler part's upwinding: delta (a time) or deltaFraction (of h), maxShift, soundSpeed")
@@ -582,7 +589,7 @@ void FpmSolver<Dim>::readEuler() {
                                                        : fpm::UpwindDirection::gradient;
     }
     upwind.shiftedFitCondition = settings_.scalar("shiftedFitCondition");
-    eulerPart_ = std::make_unique<fpm::EulerPart<Dim>>(fitOptions<Dim>(settings_), upwind);
+    eulerPart_ = std::make_unique<fpm::EulerPart<Dim>>(shiftedFitBase(), upwind);
 }
 
 template <int Dim>
@@ -614,7 +621,16 @@ void FpmSolver<Dim>::readShear() {
         options.central = e.word("scheme") == "central";
     }
     options.shiftedFitCondition = settings_.scalar("shiftedFitCondition");
-    shearPart_ = std::make_unique<fpm::ShearPart<Dim>>(fitOptions<Dim>(settings_), options);
+    shearPart_ = std::make_unique<fpm::ShearPart<Dim>>(shiftedFitBase(), options);
+}
+
+// The fit options the upwind parts build their shifted fits from: the central fit's, at
+// shiftedFitOrder where given.
+template <int Dim>
+typename LeastSquaresOperators<Dim>::Options FpmSolver<Dim>::shiftedFitBase() const {
+    typename LeastSquaresOperators<Dim>::Options options = fitOptions<Dim>(settings_);
+    if (settings_.given("shiftedFitOrder")) options.order = int(settings_.integer("shiftedFitOrder"));
+    return options;
 }
 
 template <int Dim>
@@ -745,9 +761,13 @@ void FpmSolver<Dim>::initialiseFields() {
 
     std::ostringstream log;
     log << "fpmSolid: " << n << " particles, spacing " << spacing_ << ", h " << h_ << " (" << h_ / spacing_
-        << " spacings), fit order " << settings_.integer("order") << " (" << settings_.word("derivatives")
-        << " derivatives), fitWeight " << fitWeight_->type() << (fitWeight_->squared() ? " squared" : "")
-        << "; splitting " << splitting_->type() << ", subsystems:"
+        << " spacings), fit order " << settings_.integer("order")
+        << (settings_.given("shiftedFitOrder")
+                ? " (shifted fits " + std::to_string(settings_.integer("shiftedFitOrder")) + ")"
+                : std::string())
+        << " (" << settings_.word("derivatives") << " derivatives), fitWeight " << fitWeight_->type()
+        << (fitWeight_->squared() ? " squared" : "") << "; splitting " << splitting_->type()
+        << ", subsystems:"
         << (shear_ ? std::string(shearPart_->options().central ? " shear (no upwinding: central; "
                                                                : " shear (dimensional upwinding, l = ") +
                          formatKeywordNumber(shearPart_->options().delta) +

@@ -69,6 +69,7 @@ private:
     void measureFlowError(double t);
     void readEuler();
     void readShear();
+    typename LeastSquaresOperators<Dim>::Options shiftedFitBase() const;  // shiftedFitOrder applied
     // The stages of the split (fpm/splitting): each advances the state by its fraction of the step
     // on this step's fit and adds its share of the particles' velocity to motionVelocity_.
     void shearStage(double dt, double fraction);
