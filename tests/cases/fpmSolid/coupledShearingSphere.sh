@@ -30,9 +30,6 @@ echo "bisector extent: largest $lPeak at t = $tPeak (thesis 0.5), first minimum 
 awk -v t="$tPeak" 'BEGIN { exit !(t >= 0.4 && t <= 0.6) }' || fail "the bisector extent peaks at t = $tPeak, not 0.5 +- 0.1"
 [ "$tReversal" != none ] && awk -v t="$tReversal" 'BEGIN { exit !(t >= 1.2 && t <= 1.6) }' ||
     fail "the bisector extent's first minimum after its peak is at t = $tReversal, not 1.4 +- 0.2"
-rise=$(energyRises "$q") || fail "no totalEnergy or angularMomentum_z in $q"
-read -r worst tRise e0 eEnd _ <<< "$rise"
-echo "energy: $e0 at the start, $eEnd at t = 2; largest rise between written times $worst (t = $tRise)"
-awk -v w="$worst" -v a="$e0" 'BEGIN { exit !(w <= 1e-12 * a) }' || fail "the energy rose by $worst at t = $tRise"
-grep -q "never read" "$c/log.fpmSolid" && fail "an entry was never read: $(grep -A2 "never read" "$c/log.fpmSolid")"
+energyFalls "$q" ""
+allRead "$c/log.fpmSolid"
 exit 0
