@@ -309,6 +309,7 @@ double Time::nextWriteTime() const {
 }
 
 double Time::chooseDeltaT(const TimeStepVote& stable) {
+    lastVote_ = stable;
     // An infinite vote means "no limit" (particles at rest); zero, negative or NaN means the state is broken.
     if (!(stable.deltaT > 0))
         throw RunError("the stable time step (" + stable.reason + ") is " + std::to_string(stable.deltaT) +

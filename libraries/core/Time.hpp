@@ -36,6 +36,9 @@ enum class StopAt { endTime, writeNow, noWriteNow };
 struct TimeStepVote {
     double deltaT;
     std::string reason;
+    // The global id of the particle that limits the step, where the vote knows it (-1: none, or a
+    // limit that is not a particle's): the health check names it when the step collapses.
+    std::int64_t particle = -1;
 };
 
 class Time {
@@ -83,6 +86,9 @@ public:
     // stable one is a RunError naming the limit); clipped so that the step lands exactly on the
     // end time and, for adjustableRunTime, on write times.
     double chooseDeltaT(const TimeStepVote& stable);
+    // The vote the latest chooseDeltaT was given (deltaT 0 before the first): the health check
+    // compares it with the first.
+    const TimeStepVote& lastVote() const { return lastVote_; }
     // t += dt, index++, and decides whether this is a write time.
     void advance(double dt);
     bool writeTime() const { return writeTime_; }
@@ -121,6 +127,7 @@ private:
 
     double value_ = 0;
     double deltaT_ = 0;
+    TimeStepVote lastVote_{0.0, "", -1};
     double desiredDeltaT_ = 0;  // the step before clipping to write/end times (limits growth)
     std::int64_t timeIndex_ = 0;
     std::int64_t writeIndex_ = 0;  // write intervals completed (runTime, adjustableRunTime)

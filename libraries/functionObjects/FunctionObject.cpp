@@ -1,5 +1,7 @@
 #include "functionObjects/FunctionObject.hpp"
 
+#include "functionObjects/Health.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -88,6 +90,7 @@ bool FunctionObject::due(bool solverWrites) {
 }
 
 void FunctionObject::execute(bool solverWrites) {
+    check();
     if (!due(solverWrites)) return;
     write();
     // After the write: the CPU time the error it measured had cost, the write's own included.
@@ -131,6 +134,22 @@ void ErrorNormWriter::add(double time, const std::string& field, double L1, doub
 
 FunctionObjectList::FunctionObjectList(const Dictionary& controlDict, const RunContext& context) {
     const Dictionary* functions = controlDict.findDict("functions");
+    bool healthListed = false;
+    if (functions)
+        for (const auto& entry : functions->entries())
+            if (entry->isDict())
+                if (auto type = functions->subDict(entry->key).getOptional<std::string>("type"))
+                    healthListed = healthListed || *type == "health";
+    // First: a state it stops on is never seen (and written into a CSV) by the objects after it.
+    if (controlDict.findDict("health")) {
+        if (healthListed)
+            throw controlDict.error("health", "the health check is set twice: here and as a function object "
+                                              "of type health in `functions`; keep one");
+        objects_.push_back(std::make_unique<Health>(controlDict.subDict("health"), "health", context));
+    } else if (!healthListed && controlDict.getOrDefault<bool>("health", true)) {
+        const Dictionary defaults;  // every keyword at its default (read in the constructor, not kept)
+        objects_.push_back(std::make_unique<Health>(defaults, "health", context));
+    }
     if (!functions) return;
     for (const auto& entry : functions->entries()) {
         if (!entry->isDict())

@@ -74,7 +74,9 @@ public:
     // Whether this step is one of this object's write times (`solverWrites`: the solver writes now).
     bool due(bool solverWrites);
     virtual void write() = 0;
-    // due(), then write() and the stamp of that write (step, time, process CPU time).
+    // Called after every step before due(): a check that must not wait for a write (health).
+    virtual void check() {}
+    // check(), due(), then write() and the stamp of that write (step, time, process CPU time).
     void execute(bool solverWrites);
     virtual std::vector<ErrorNorm> errorNorms() const { return {}; }
     // Values compared with an exact one, as of the latest write (empty: none).
@@ -133,7 +135,9 @@ private:
 
 class FunctionObjectList {
 public:
-    // Reads controlDict's `functions` (absent: none).
+    // Reads controlDict's `functions` (absent: none), and puts the health check first (Health.cpp):
+    // controlDict's `health { ... }` gives its settings, `health off;` leaves it out, and a
+    // `functions` entry of type health replaces it.
     FunctionObjectList(const Dictionary& controlDict, const RunContext& context);
     // Called after every step (and once at the start).
     void execute(bool solverWrites);

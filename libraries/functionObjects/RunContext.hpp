@@ -3,10 +3,12 @@
 // and the energies it alone knows how to compute.
 #include "core/Case.hpp"
 #include "core/Time.hpp"
+#include "functionObjects/HealthIndicator.hpp"
 #include "particles/FieldStore.hpp"
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace mfdyn {
 
@@ -24,6 +26,22 @@ public:
     virtual std::optional<double> internalEnergy() const { return std::nullopt; }
     // Energy of conservative body forces, when the solver has one.
     virtual std::optional<double> potentialEnergy() const { return std::nullopt; }
+    // The energy budget's other two terms, each summed since the solver was constructed (a run's
+    // start), when the solver measures them (the health check's budget: K + U + Phi + D - W is
+    // constant for a scheme that loses nothing it does not account for):
+    //   schemeDissipation  energy the scheme's stabilisation removed from K + U (an artificial
+    //                      viscosity whose heat goes to U removes nothing; JST's or upwinding's does)
+    //   externalWork       work done on the particles by boundary conditions and non-conservative
+    //                      body forces
+    virtual std::optional<double> schemeDissipation() const { return std::nullopt; }
+    virtual std::optional<double> externalWork() const { return std::nullopt; }
+    // The method's indicators of a degrading discretisation, computed now (the health check calls
+    // it at its writes only: it may cost a pass over the neighbours).
+    virtual std::vector<HealthIndicator> healthIndicators() const { return {}; }
+    // The box the particles must stay in, when the method has one (a background grid's).
+    virtual std::optional<DomainBox> domain() const { return std::nullopt; }
+    // Particles [0, ownedParticles()) are this process's own; the rest are ghosts (images).
+    virtual std::size_t ownedParticles() const { return fields().size(); }
 };
 
 }  // namespace mfdyn

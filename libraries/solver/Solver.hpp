@@ -69,6 +69,7 @@ public:
     virtual std::vector<std::string> summary(double /*loopSeconds*/) const { return {}; }
 
     const Case& runCase() const override;
+    std::size_t ownedParticles() const override;
     const Time& time() const override;
     const std::string& startTimeName() const override;
 
@@ -140,7 +141,6 @@ private:
     // reduction: every rank calls it, bad particles or not).
     template <class Bad>
     static double globalCount(std::size_t n, Bad& bad);
-    std::size_t ownedParticles() const;
     const std::vector<std::int64_t>& globalIds() const;
 
     std::deque<Dictionary> opened_;  // a deque: references to its elements stay valid

@@ -1,0 +1,57 @@
+#pragma once
+#include "core/Log.hpp"
+#include "functionObjects/FunctionObject.hpp"
+
+#include <memory>
+#include <optional>
+#include <set>
+
+namespace mfdyn {
+
+// The run's health, watched between steps: see Health.cpp.
+class Health final : public FunctionObject {
+public:
+    Health(const Dictionary& dict, const std::string& name, const RunContext& context);
+    static KeywordSchema keywords();
+    void check() override;
+    void write() override;
+    std::vector<std::string> summary() const override;
+
+private:
+    Health(const KeywordValues& values, const std::string& name, const RunContext& context);
+    void checkFinite() const;
+    void checkTimeStep();
+    void checkDomain();
+    // "particle <id> at (x, y, z)": the position of global id `id` (owned here), for diagnoses.
+    std::string describeParticle(std::int64_t id) const;
+    struct Budget {
+        double kinetic = 0, internal = 0, potential = 0, dissipated = 0, work = 0;
+        double total() const { return kinetic + internal + potential; }
+    };
+    Budget measureBudget() const;
+
+    long checkInterval_;
+    double minTimeStepFraction_;
+    std::optional<double> maxEnergyImbalance_;
+    bool stopOnLeaving_;
+    std::optional<DomainBox> domain_;
+    std::string domainSource_;
+
+    std::unique_ptr<CsvFile> csv_;
+    std::vector<std::string> indicatorNames_;
+    std::optional<Budget> first_;
+    double energyScale_ = 0;      // the largest |K| + |U| + |Phi| seen: the imbalance's reference
+    double lastImbalance_ = 0;    // relative to energyScale_, as of the latest write
+    double largestImbalance_ = 0; // the largest |relative imbalance| over the writes
+    double firstVote_ = 0;        // the first finite stable time step
+    double smallestVoteRatio_ = 1;
+    std::string smallestVoteReason_;
+    std::size_t outsideCount_ = 0;
+    std::set<std::string> warnedIndicators_;
+    std::vector<std::pair<std::string, std::size_t>> largestIndicatorCounts_;
+    long checks_ = 0;
+    Stopwatch sinceStart_;
+    double seconds_ = 0;  // spent in check() and write()
+};
+
+}  // namespace mfdyn
