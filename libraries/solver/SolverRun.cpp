@@ -313,9 +313,21 @@ int SolverRun::run(Solver& solver) {
     int stopSignal = 0;
     bool stoppedByControl = false;
     while (time.running()) {
-        solver.preStep();
-        const TimeStepVote vote = solver.stableTimeStep();
-        const double dt = time.chooseDeltaT(vote);
+        TimeStepVote vote{0.0, "", -1};
+        double dt = 0;
+        try {
+            solver.preStep();
+            vote = solver.stableTimeStep();
+            dt = time.chooseDeltaT(vote);
+        } catch (const RunError&) {
+            // A state the vote cannot judge (an equation of state out of range, a collapsed
+            // step): the state that failed is the current one, written for diagnosis unless it is.
+            if (lastWritten_ != time.timeName()) {
+                write(solver);
+                Log::info("Wrote the failing state to " + time.timeName() + "/");
+            }
+            throw;
+        }
         try {
             solver.step(dt);
         } catch (const RunError&) {
