@@ -68,10 +68,18 @@ const std::vector<std::int64_t>& Solver::globalIds() const {
     return fields().requireField<std::int64_t>("globalId");
 }
 
+std::vector<std::string> Solver::skippedPhases() const {
+    std::vector<std::string> skipped;
+    for (std::size_t k = 0; k < phases_.size(); ++k)
+        if (phaseEntries_[k] == 0) skipped.push_back(phases_[k].first);
+    return skipped;
+}
+
 std::size_t Solver::phaseIndex(std::string_view name) {
     for (std::size_t k = 0; k < phases_.size(); ++k)
         if (phases_[k].first == name) return k;
     phases_.emplace_back(std::string(name), 0.0);
+    phaseEntries_.push_back(0);
     return phases_.size() - 1;
 }
 

@@ -65,6 +65,9 @@ public:
     virtual std::vector<const Dictionary*> dictionaries() const;
     // Seconds spent in each named phase, for the summary: by default those timed by phase().
     virtual std::vector<std::pair<std::string, double>> phaseTimes() const { return phases_; }
+    // The declared phases this run never entered (a scene without strength skips "strength"): the
+    // summary lists them on one line instead of timing them at 0 s.
+    std::vector<std::string> skippedPhases() const;
     // Extra lines for the summary (pair interactions per second, ...), given the time-loop seconds.
     virtual std::vector<std::string> summary(double /*loopSeconds*/) const { return {}; }
 
@@ -95,7 +98,9 @@ protected:
     // in the order first timed.
     class ScopedPhase {
     public:
-        ScopedPhase(Solver& solver, std::size_t index) : solver_(solver), index_(index) {}
+        ScopedPhase(Solver& solver, std::size_t index) : solver_(solver), index_(index) {
+            ++solver_.phaseEntries_[index_];
+        }
         ScopedPhase(const ScopedPhase&) = delete;
         ScopedPhase& operator=(const ScopedPhase&) = delete;
         ~ScopedPhase() { stop(); }
@@ -145,6 +150,7 @@ private:
 
     std::deque<Dictionary> opened_;  // a deque: references to its elements stay valid
     std::vector<std::pair<std::string, double>> phases_;
+    std::vector<std::int64_t> phaseEntries_;  // per phase, how often it was entered
 };
 
 }  // namespace mfdyn

@@ -458,11 +458,20 @@ void SolverRun::summary(const Solver& solver, double steppingSeconds, std::int64
                   steppingSeconds > 0 ? double(n) * double(stepsRun) / steppingSeconds : 0.0, threadCount());
     s << line;
     s << "    peak memory          " << formatBytes(double(peakMemoryBytes())) << "\n";
+    // A phase the scene does not need is never entered: named once, not timed at 0 s. (A solver's
+    // phaseTimes may decorate a name, "updateNeighbours (84 rebuilds)": its first word is the phase.)
+    const std::vector<std::string> skipped = solver.skippedPhases();
     for (const auto& [phase, seconds] : solver.phaseTimes()) {
+        if (std::find(skipped.begin(), skipped.end(), phase.substr(0, phase.find(' '))) != skipped.end()) continue;
         std::snprintf(line, sizeof line, "    phase %-14s %s (%.1f%%)\n", phase.c_str(),
                       formatSeconds(seconds).c_str(),
                       steppingSeconds > 0 ? 100 * seconds / steppingSeconds : 0.0);
         s << line;
+    }
+    if (!skipped.empty()) {
+        s << "    phases skipped      ";
+        for (std::size_t k = 0; k < skipped.size(); ++k) s << (k ? ", " : " ") << skipped[k];
+        s << " (not needed by this scene)\n";
     }
     for (const auto& extra : solver.summary(steppingSeconds)) s << "    " << extra << "\n";
     if (Log::warningCount()) s << "    warnings             " << Log::warningCount() << "\n";
