@@ -44,9 +44,14 @@
 //                        unexplained by any smooth field. On Sod's tube the particles counted are
 //                        those of the contact, whose velocity wiggles from particle to particle by
 //                        ~1e-3 of the flow speed (the known blip of SPH at a contact, Price 2008):
-//                        the measure is one of shape, not amplitude. Particles whose RMS velocity
-//                        difference is below 1e-6 of their sound speed count as at rest (e = 0):
-//                        round-off there is not a mode. value: the largest e_a.
+//                        the measure is one of shape, not amplitude. So e_a is set to 0 where the
+//                        unexplained part is slow, its kernel-weighted RMS (Σ W |v_ba − C φ|²/Σ W)^½
+//                        below 1e-3 of the particle's sound speed: a mode oscillating at the
+//                        lattice's frequency ~ c/Δ moves neighbours apart by ~ (δv/c) Δ, under a
+//                        thousandth of a spacing there, the noise of any SPH solid or gas at rest
+//                        (the Taylor bar at rest after its impact: e up to 0.97 at 2e-5 to 5e-4 c,
+//                        none counted; at 20 us, 12 particles at the impact face at 1e-3 to 8e-3 c
+//                        are). value: the largest e_a.
 //
 // The pass builds its own gather list (one neighbour search, at the health check's writes only).
 #include "sph/SphHealth.hpp"
@@ -168,7 +173,8 @@ SphHealthValues<Dim> sphHealthValues(const SphHealthState<Dim>& s) {
                 const double w = W.W(xba.norm(), ha);
                 if (w > 0) residual += w * (s.v[b] - s.v[a] - C * basis(xba)).squaredNorm();
             }
-            e = std::sqrt(std::min(1.0, residual / total));
+            // A mode slower than the gate is noise (SphHealth.cpp's head).
+            if (residual > floor * floor * weights) e = std::sqrt(std::min(1.0, residual / total));
         }
         out.hourglass[a] = e;
     });
@@ -204,12 +210,14 @@ std::vector<HealthIndicator> sphHealthIndicators(const SphHealthState<Dim>& s) {
               sums.nearest.particle() >= 0 ? sums.nearest.value : std::numeric_limits<double>::quiet_NaN(),
               std::size_t(sums.clumped), sums.nearest.particle(),
               "among particles in tension (P < 0, or a principal stress of -P I + tau above 0) the smallest "
-              "nearest-neighbour distance over the spacing (m/rho)^(1/d) (NaN: none in tension); counted: "
+              "nearest-neighbour distance over the spacing (m/rho)^(1/d) (not a number when none is in "
+              "tension); counted: "
               "below " +
                   number(tensileClumpRatio) + ", particles clumping in pairs (Swegle, Hicks & Attaway 1995)"};
+    const bool mode = sums.mode.value < 0;  // some e_a > 0 (else no particle is named)
     out[2] = {
-        "hourglass", sums.mode.particle() >= 0 ? -sums.mode.value : 0.0, std::size_t(sums.hourglass),
-        sums.mode.particle(),
+        "hourglass", mode ? -sums.mode.value : 0.0, std::size_t(sums.hourglass),
+        mode ? sums.mode.particle() : -1,
         "the largest reproduction error e_a of the velocity field: the kernel-weighted RMS of what a "
         "least-squares quadratic fit about particle a leaves of v_b - v_a, over the RMS of v_b - v_a (0: a "
         "smooth field, 0.8 to 0.86: a zig-zag mode; cf. Ganzenmueller 2015); counted: e_a > " +

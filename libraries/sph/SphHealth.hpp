@@ -50,10 +50,10 @@ struct SphHealthState {
 // The thresholds (SphHealth.cpp says why these).
 inline constexpr double tensileClumpRatio = 0.5;     // nearest distance / (m/rho)^(1/d)
 inline constexpr double hourglassThreshold = 0.7;    // unexplained fraction of the velocity differences
-inline constexpr double hourglassNoiseFloor = 1e-6;  // velocity differences below this x c: at rest
+inline constexpr double hourglassNoiseFloor = 1e-3;  // a mode slower than this x c: noise
 
 // Per particle (owned), for the tests: the Shepard sum S, the nearest-neighbour ratio q, whether
-// it is in tension, and the hourglass measure e (0 where the velocity differences are noise).
+// it is in tension, and the hourglass measure e (0 where the mode is slower than the gate).
 template <int Dim>
 struct SphHealthValues {
     std::vector<double> shepard, nearestRatio, hourglass;

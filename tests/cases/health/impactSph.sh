@@ -17,8 +17,9 @@
 # - the indicators of the healthy run at t = 0.2 (SphHealth.cpp): no particle in tension; the
 #   Shepard sum below 1/2 only at the outermost particles of the free ends, which detach as the gas
 #   expands into vacuum (particle 0 first: its sum is its own term, 0.470); the hourglass measure
-#   past 0.7 only at the contact (ids 760 to 820: the left gas ends at 799), whose velocity wiggles
-#   from particle to particle (SPH's contact blip), at most 10 particles;
+#   largest between the contact and the shock (ids 760 to 860: the left gas ends at 799), whose
+#   velocity wiggles from particle to particle by ~1e-3 (SPH's contact blip), past 0.7 at a few
+#   particles at most (3 asserted; 2 at t = 0.05, 1 at 0.15);
 # - the health check's cost is below 3% of the run.
 set -euo pipefail
 BUILD="$1"
@@ -68,7 +69,7 @@ faultCase nan velocity 0 nan
 for word in "health check" "particle 3 " "velocity = nan" "Remedy" "Wrote the failing state to"; do expect nan "$word"; done
 written=$(sed -n 's/.*Wrote the failing state to \([^ ]*\)\/.*/\1/p' "$log")
 [ -f "$WORK/nan/$written/particles.vtp" ] || fail "nan: the failing state $written/ was not written"
-echo "nan: stopped by the health check at $written: $(grep -m1 -o 'non-finite values: particle 3 [^(]*' "$log")"
+echo "nan: stopped by the health check at $written: $(grep -m1 -o 'non-finite values: particle 3 at [^;]*has [^(]*' "$log")"
 
 faultCase speed velocity 0 1e8 adjust
 [ "$status" = 1 ] || fail "speed: exit status $status, not 1"
@@ -94,7 +95,8 @@ budgetRun() {
                if (d < 0) d = -d; if (w < 0) w = -w; if (d / E > D) D = d / E; if (w / E > W) W = w / E
                r = $h["relativeImbalance"]; t = $h["time"]
                s = $h["neighbourDeficiency"] " " $h["neighbourDeficiency_count"] " " $h["neighbourDeficiency_worstId"]
-               g = $h["hourglass"] " " $h["hourglass_count"] " " $h["hourglass_worstId"]
+               if ($h["hourglass_count"] > gc) gc = $h["hourglass_count"]
+               g = $h["hourglass"] " " gc " " $h["hourglass_worstId"]
                k = $h["tensileInstability_count"] }
              END { printf "%s %.6e %.3e %.3e %s %s %s\n", t, r, D, W, k, s, g }' "$csv"
 }
@@ -111,12 +113,12 @@ awk -v q="$ratio" 'BEGIN { exit !(q > 3 && q < 5) }' || fail "imbalance $r1 at d
 [ "$k1" = 0 ] || fail "tensileInstability counts $k1 particles in Sod's tube, where none is in tension"
 [ "$sw1" = 0 ] && [ "$sc1" -le 2 ] || fail "neighbourDeficiency: $sc1 particles, the worst $sw1 (expected particle 0, at most 2)"
 awk -v s="$s1" 'BEGIN { exit !(s > 0.469 && s < 0.471) }' || fail "neighbourDeficiency $s1: not particle 0's own term 0.470"
-[ "$gw1" -ge 760 ] && [ "$gw1" -le 820 ] && [ "$gc1" -le 10 ] || fail "hourglass: $gc1 particles, the worst $gw1 (expected the contact's, 760 to 820, at most 10)"
+[ "$gw1" -ge 760 ] && [ "$gw1" -le 860 ] && [ "$gc1" -le 3 ] || fail "hourglass: up to $gc1 particles, the worst $gw1 (expected between the contact and the shock, 760 to 860, at most 3)"
 grep -q "health: indicator neighbourDeficiency" "$log" || fail "the indicators' definitions are not logged"
 summary=$(grep -m1 "energy imbalance" "$log") || fail "no health summary line"
 cost=$(echo "$summary" | sed -n 's/.*cost \([0-9.e+-]*\)% of the run.*/\1/p')
 awk -v c="$cost" 'BEGIN { exit !(c < 3) }' || fail "the health check costs $cost% of the run"
 echo "budget: relative imbalance $r1 at dt 5e-5 (bound $bound), $r2 at 2.5e-5 (ratio $ratio); dissipated $d1, work $w1"
-echo "indicators: smallest Shepard sum $s1 ($sc1 particles below 1/2, particle $sw1), largest hourglass $g1 ($gc1 past 0.7, particle $gw1), none in tension"
+echo "indicators at t = 0.2: smallest Shepard sum $s1 ($sc1 particles below 1/2, particle $sw1), largest hourglass $g1 (particle $gw1; at most $gc1 past 0.7 at a write), none in tension"
 echo "summary: $summary"
 echo "PASS: health.impactSph"
