@@ -35,6 +35,11 @@
 // numberDensity when the smoothing-length law needs it; the leapfrog's half-step copies;
 // deviatoricStress (and plasticStrain, temperature as the laws ask) only when a material has a
 // strength law other than none: a hydrodynamic scene carries no stress and runs no stress terms.
+//
+// The health check (functionObjects/Health.hpp) sees: the time-step vote's particle (the argmin of
+// the Courant or density-rate limit), the energy budget's D and W (measurePower in SphSolver.cpp:
+// D the rates' loss from K + U, zero to round-off for this scheme, W the boundary conditions'
+// work), and the indicators neighbourDeficiency, tensileInstability and hourglass (SphHealth.cpp).
 #include "boundaryConditions/BoundaryConditionList.hpp"
 #include "core/KeywordSchema.hpp"
 #include "kernels/Kernel.hpp"
