@@ -656,7 +656,9 @@ void SphSolver<Dim>::ensureRates() {
 //   - artificial stress: its heating −½ Σ_j v_ij·f_ij is minus its work, pair by pair;
 //   - mirror ghosts: the real particles and their images are a mirror-symmetric system whose total
 //     energy the pair sums keep, the images' half equal to the real half, so the real half is kept.
-// What makes it non-zero: `momentum difference` (not antisymmetric: its power does not match the
+// impactSph has no XSPH, no body force and does not apply boundary forces (prescribedTraction's
+// addBoundaryForces hook is not called): nothing else moves energy. What makes Ḋ non-zero:
+// `momentum difference` (not antisymmetric: its power does not match the
 // pdV work), a user dissipation whose heating is not its work, a ghost layer short of the support,
 // or a pair missing from one of its two rows. Without an energy equation (a barotropic equation of
 // state) U is not measured, and neither is D.
