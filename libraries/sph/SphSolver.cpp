@@ -33,6 +33,7 @@
 #include "solver/MaterialAssignment.hpp"
 #include "solver/SolverRegistry.hpp"
 #include "solver/SolverRun.hpp"
+#include "sph/SphHealth.hpp"
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
@@ -624,8 +625,77 @@ void SphSolver<Dim>::ensureRates() {
     computeRates();
     pairInteractions_ += double(neighbours_.list->pairCount());
     removeGhosts();
-    if (!boundaries_.empty()) boundaries_.constrainAcceleration(*particles_, dvdt_, time().value());
+    std::vector<Vector<Dim>> freeRates;  // dv/dt before the constraints, for their power
+    if (!boundaries_.empty()) {
+        freeRates.assign(dvdt_.begin(), dvdt_.begin() + std::ptrdiff_t(particles_->ownedCount()));
+        boundaries_.constrainAcceleration(*particles_, dvdt_, time().value());
+    }
+    measurePower(freeRates);
     ratesValid_ = true;
+}
+
+// The energy budget of the health check (RunContext: K + U + D − W constant), with K = Σ ½ m|v|²
+// and U = Σ m e over the owned particles. From the rates f = (dv/dt, de/dt) before the
+// boundary conditions act, and a^c the constrained dv/dt,
+//
+//   dissipation power   Ḋ = −Σ_i m_i (v_i·dv_i/dt + de_i/dt)      (what the rates lose from K + U)
+//   constraint power    Ẇ = Σ_i m_i v_i·(a^c_i − dv_i/dt)         (the work rate of the conditions)
+//
+// plus, at each velocity constraint of the synchronised v, the jump Σ ½ m (|v'|² − |v|²) it makes
+// (constrainVelocityWork: a rigid wall's impulse, a prescribed speed set). Ḋ is measured, not
+// assumed: for the scheme as published it is zero to round-off, term by term (SphSolver.cpp's
+// head, DensityScheme.hpp, RiemannDissipation.cpp):
+//   - pressure: with a_i = m_i c_i/ρ_i², Σ_i m_i v_i·(pressure force) = −Σ_i a_i P_i/ω_i Σ_j b_j
+//     v_ij·∇_iW_ij(h_i) = −Σ_i m_i de_i/dt (the variational pairing, any per-particle ω, the floor too);
+//   - viscosity: the pair force is antisymmetric and the viscous heating of i and j together,
+//     −m_i m_j a_v v'(v_ij·r̂)² F/ρ̄, is exactly minus its work (v' and ρ̄ are symmetric in i, j);
+//   - conduction: m_i m_j a_e v'(e_i − e_j) F/ρ̄ is antisymmetric, a transfer of e between the pair;
+//   - the artificial mass flux enters dρ/dt only, never v or e: it moves no energy (it changes P
+//     through ρ later, and the pressure terms stay matched to e);
+//   - strength: Σ_i V_i τ_i:L_i heating is minus the work of the stress force (same V, same ∇W);
+//   - artificial stress: its heating −½ Σ_j v_ij·f_ij is minus its work, pair by pair;
+//   - mirror ghosts: the real particles and their images are a mirror-symmetric system whose total
+//     energy the pair sums keep, the images' half equal to the real half, so the real half is kept.
+// impactSph has no XSPH, no body force and does not apply boundary forces (prescribedTraction's
+// addBoundaryForces hook is not called): nothing else moves energy. What makes Ḋ non-zero:
+// `momentum difference` (not antisymmetric: its power does not match the
+// pdV work), a user dissipation whose heating is not its work, a ghost layer short of the support,
+// or a pair missing from one of its two rows. Without an energy equation (a barotropic equation of
+// state) U is not measured, and neither is D.
+//
+// In time, each integrator's own quadrature of its rates: the midpoint rule for the
+// predictor-corrector (the midpoint powers × Δt), the trapezoid for the leapfrog, whose rates f^k
+// at t_k drive the step [t_k, t_{k+1}]: Δt_k Ẋ^k at the step, ½ Δt_k (Ẋ^{k+1} − Ẋ^k) at the next
+// evaluation (so a write between the two is off by O(Δt²) of the last step only). Both are
+// second-order, as the integrators: the budget's imbalance is then the integrator's O(Δt²) energy
+// error (and the round-off of the sums).
+template <int Dim>
+void SphSolver<Dim>::measurePower(const std::vector<Vector<Dim>>& freeRates) {
+    const std::size_t n = particles_->ownedCount();
+    const bool constrained = !freeRates.empty();
+    const SumArray<2> power = GlobalReduce::sum<SumArray<2>>(n, [&](std::size_t i) {
+        SumArray<2> t;
+        const Vector<Dim>& a = constrained ? freeRates[i] : dvdt_[i];
+        t.s[0] = -m_[i] * (v_[i].dot(a) + dedt_[i]);
+        if (constrained) t.s[1] = m_[i] * v_[i].dot(dvdt_[i] - a);
+        return t;
+    });
+    dissipationPower_ = power.s[0];
+    constraintPower_ = power.s[1];
+    if (pendingDt_ > 0) {
+        dissipated_ += 0.5 * pendingDt_ * (dissipationPower_ - pendingDissipationPower_);
+        externalWork_ += 0.5 * pendingDt_ * (constraintPower_ - pendingConstraintPower_);
+        pendingDt_ = 0;
+    }
+}
+
+template <int Dim>
+double SphSolver<Dim>::constrainVelocityWork(std::vector<Vector<Dim>>& v, double t) {
+    const std::size_t n = particles_->ownedCount();
+    const std::vector<Vector<Dim>> before(v.begin(), v.begin() + std::ptrdiff_t(n));
+    boundaries_.constrainVelocity(*particles_, v, t);
+    return GlobalReduce::sum<double>(
+        n, [&](std::size_t i) { return 0.5 * m_[i] * (v[i].squaredNorm() - before[i].squaredNorm()); });
 }
 
 template <int Dim>
@@ -685,16 +755,21 @@ template <int Dim>
 TimeStepVote SphSolver<Dim>::stableTimeStep() {
     ensureRates();
     const double xi = time().maxCo();
-    const std::size_t n = x_.size();
-    // Time-step votes are global: every rank must take the same Δt.
-    TimeStepVote vote{
-        xi * GlobalReduce::min(n, [&](std::size_t i) { return h_[i] / (v_[i].norm() + c_[i]); }), "Courant"};
+    const std::size_t n = particles_->ownedCount();
+    const std::vector<std::int64_t>& id = particles_->globalId();
+    // Time-step votes are global: every rank must take the same Δt. The argmin rides in the same
+    // reduction (ArgMin: the lowest global id among equal values), so the vote names its particle.
+    const ArgMin courant = GlobalReduce::sum<ArgMin>(n, [&](std::size_t i) {
+        return ArgMin{h_[i] / (v_[i].norm() + c_[i]), id[i]};
+    });
+    TimeStepVote vote{xi * courant.value, "Courant", courant.particle()};
     if (densityRateLimit_ > 0 && !scheme_->summation()) {
-        const double limit = densityRateLimit_ * GlobalReduce::min(n, [&](std::size_t i) {
-                                 const double rate = std::abs(drhodt_[i]);
-                                 return rate > 0 ? rho_[i] / rate : std::numeric_limits<double>::infinity();
-                             });
-        if (limit < vote.deltaT) vote = {limit, "density rate"};
+        const ArgMin rate = GlobalReduce::sum<ArgMin>(n, [&](std::size_t i) {
+            const double r = std::abs(drhodt_[i]);
+            return ArgMin{r > 0 ? rho_[i] / r : std::numeric_limits<double>::infinity(), id[i]};
+        });
+        const double limit = densityRateLimit_ * rate.value;
+        if (limit < vote.deltaT) vote = {limit, "density rate", rate.particle()};
     }
     return vote;
 }
@@ -738,11 +813,13 @@ void SphSolver<Dim>::stepPredictorCorrector(double dt) {
     ratesValid_ = false;
     ensureRates();
     timed.resume();
-    // Corrector over the whole step with the midpoint rates.
+    // Corrector over the whole step with the midpoint rates (and the budget by the midpoint rule).
     advance(dt);
+    dissipated_ += dt * dissipationPower_;
+    externalWork_ += dt * constraintPower_;
     if (tau_) returnToYieldSurface(*tau_, dt);
     if (!boundaries_.empty()) {
-        boundaries_.constrainVelocity(*particles_, v_, t + dt);
+        externalWork_ += constrainVelocityWork(v_, t + dt);
         boundaries_.constrainPosition(*particles_, t + dt);
     }
     ratesValid_ = false;
@@ -799,10 +876,14 @@ void SphSolver<Dim>::step(double dt) {
         if (plasticStrain_) *plasticStrain_ = std::move(history);
         if (temperature_) *temperature_ = std::move(heat);
     }
+    // The budget: this step's part of the trapezoid (measurePower completes it).
+    dissipated_ += dt * dissipationPower_;
+    externalWork_ += dt * constraintPower_;
+    pendingDt_ = dt, pendingDissipationPower_ = dissipationPower_, pendingConstraintPower_ = constraintPower_;
     if (!boundaries_.empty()) {
         const double t = time().value();
         boundaries_.constrainVelocity(*particles_, *vHalf_, t + 0.5 * dt);
-        boundaries_.constrainVelocity(*particles_, v_, t + dt);
+        externalWork_ += constrainVelocityWork(v_, t + dt);
         boundaries_.constrainPosition(*particles_, t + dt);
     }
     started_ = true;
@@ -862,6 +943,49 @@ std::optional<double> SphSolver<Dim>::internalEnergy() const {
     const auto& e = *e_;
     // A conservation sum: added to the global kinetic energy by conservedQuantities.
     return GlobalReduce::sum<double>(particles_->ownedCount(), [&](std::size_t i) { return m_[i] * e[i]; });
+}
+
+template <int Dim>
+std::optional<double> SphSolver<Dim>::schemeDissipation() const {
+    if (!e_) return std::nullopt;  // U not measured: Ḋ would hold its rate (measurePower)
+    return dissipated_;
+}
+
+template <int Dim>
+std::optional<double> SphSolver<Dim>::externalWork() const {
+    return externalWork_;
+}
+
+// The indicators of SphHealth.cpp on the owned particles, with this moment's mirror images as
+// neighbours (the layer is made again here: between steps the solver keeps none in the set).
+template <int Dim>
+std::vector<HealthIndicator> SphSolver<Dim>::healthIndicators() const {
+    const std::size_t owned = particles_->ownedCount();
+    SphHealthState<Dim> s;
+    s.owned = s.size = owned;
+    s.x = x_.data(), s.v = v_.data(), s.m = m_.data(), s.rho = rho_.data(), s.h = h_.data(), s.p = p_.data();
+    s.soundSpeed = c_.data();
+    s.tau = tau_ ? tau_->data() : nullptr;
+    s.globalId = particles_->globalId().data();
+    s.W = W_;
+    std::vector<Vector<Dim>> x, v;
+    std::vector<double> m, rho, h, p;
+    GhostBlock<Dim> layer;
+    if (boundaries_.makesGhosts()) {
+        const double hMax = GlobalReduce::max(owned, [&](std::size_t i) { return h_[i]; });
+        layer = boundaries_.ghosts(*particles_, v_, kernel_->supportRadius(hMax) / 3.0, time().value());
+        auto extend = [&](auto& out, const auto& field, const auto& images) {
+            out.assign(field.begin(), field.begin() + std::ptrdiff_t(owned));
+            out.insert(out.end(), images.begin(), images.end());
+            return out.data();
+        };
+        s.size = owned + layer.size();
+        s.x = extend(x, x_, layer.position), s.v = extend(v, v_, layer.velocity);
+        s.m = extend(m, m_, layer.gather(m_)), s.rho = extend(rho, rho_, layer.gather(rho_));
+        s.h = extend(h, h_, layer.gather(h_)), s.p = extend(p, p_, layer.gather(p_));
+        s.imageOf = layer.source.data();
+    }
+    return sphHealthIndicators(s);
 }
 
 template <int Dim>

@@ -35,6 +35,11 @@
 // numberDensity when the smoothing-length law needs it; the leapfrog's half-step copies;
 // deviatoricStress (and plasticStrain, temperature as the laws ask) only when a material has a
 // strength law other than none: a hydrodynamic scene carries no stress and runs no stress terms.
+//
+// The health check (functionObjects/Health.hpp) sees: the time-step vote's particle (the argmin of
+// the Courant or density-rate limit), the energy budget's D and W (measurePower in SphSolver.cpp:
+// D the rates' loss from K + U, zero to round-off for this scheme, W the boundary conditions'
+// work), and the indicators neighbourDeficiency, tensileInstability and hourglass (SphHealth.cpp).
 #include "boundaryConditions/BoundaryConditionList.hpp"
 #include "core/KeywordSchema.hpp"
 #include "kernels/Kernel.hpp"
@@ -69,6 +74,9 @@ public:
     void step(double dt) override;
     ParticleSetBase& particles() override { return *particles_; }
     std::optional<double> internalEnergy() const override;
+    std::optional<double> schemeDissipation() const override;
+    std::optional<double> externalWork() const override;
+    std::vector<HealthIndicator> healthIndicators() const override;
     std::string solverState() const override;
     void restoreSolverState(const Dictionary& state) override;
     std::vector<std::pair<std::string, double>> phaseTimes() const override;
@@ -96,6 +104,8 @@ private:
     void updateSmoothingLength();
     void stepPredictorCorrector(double dt);
     void checkState(const char* phase) const;
+    void measurePower(const std::vector<Vector<Dim>>& freeRates);
+    double constrainVelocityWork(std::vector<Vector<Dim>>& v, double t);
 
     std::unique_ptr<ParticleSet<Dim>> owner_;
     ParticleSet<Dim>* particles_;
@@ -183,6 +193,12 @@ private:
     double pairInteractions_ = 0;  // candidate pairs visited by the force loop, summed over steps
     bool ratesValid_ = false;
     bool started_ = false;
+    // The energy budget of the health check (SphSolver.cpp, measurePower): D and W since the
+    // solver was constructed, the powers of the latest rate evaluation, and the leapfrog's step
+    // whose trapezoid awaits the next evaluation's powers (pendingDt_ 0: none).
+    double dissipated_ = 0, externalWork_ = 0;
+    double dissipationPower_ = 0, constraintPower_ = 0;
+    double pendingDt_ = 0, pendingDissipationPower_ = 0, pendingConstraintPower_ = 0;
     double previousDeltaT_ = 0;
 };
 
