@@ -55,9 +55,13 @@ double correctionConditioning(std::size_t a, const NeighbourList& rows, const Ve
         const std::size_t b = rows.indices()[k];
         B += V[b] * kernel.gradW<Dim>(Vector<Dim>(X[a] - X[b]), h) * (X[b] - X[a]).transpose();
     }
-    const Eigen::JacobiSVD<Tensor<Dim>> svd(B);
-    const auto& s = svd.singularValues();
-    return s(0) > 0 ? s(Dim - 1) / s(0) : 0.0;
+    if constexpr (Dim == 1) {
+        return B(0, 0) != 0 ? 1.0 : 0.0;  // one direction: nothing to compare
+    } else {
+        const Eigen::JacobiSVD<Tensor<Dim>> svd(B);
+        const auto& s = svd.singularValues();
+        return s(0) > 0 ? s(Dim - 1) / s(0) : 0.0;
+    }
 }
 
 }  // namespace mfdyn
