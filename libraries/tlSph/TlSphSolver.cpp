@@ -30,7 +30,7 @@
 // conjugate stresses, doc/methods/tl-jst-sph.md 1) and the rates above, dW_a/dt = P_a : G_a +
 // Sigma_J,a D(J_a) (dH/dt = F x G and dJ/dt = H : G + D(J)). The pair form of T makes
 // sum_a V_a v_a . T_a = sum_a V_a P_a : G_a exactly (exchange a and b: T is variationally
-// consistent with G, tl-jst-sph.md 2.3), so the semi-discrete energy equation is
+// consistent with G, doc/methods/tl-jst-sph.md 2.3), so the semi-discrete energy equation is
 //     dE/dt = sum_a V_a v_a . [rho0 a_a - f_a]  +  sum_a V_a [v_a . (f_a + T_a) + Sigma_J,a D(J_a)]
 //           =          dW_ext/dt                 -            dD/dt
 // with f_a = P(-T_a + D(p_a)) the internal force after the stabilisation and the projections P
@@ -45,7 +45,9 @@
 // ghosts too (measured on the swinging cube: sum_a V_a (P_a : G_a - v_a . T_a) over the real
 // particles integrates to 3e-16 J of 7.9 J), so the planes do no work, as in the continuum. The
 // plastic dissipation (the return map at the end of a step, stress(.., true)) is not in D: it
-// stays in the imbalance.
+// stays in the imbalance. D need not grow monotonically: the corrected Laplacian is not
+// self-adjoint (doc/methods/tl-jst-sph.md 2.2), so sum V v . D(p) is not of one sign (the tutorial
+// plate's D falls by 1% of itself in some half periods).
 //
 // Below three dimensions the body is in plane strain (2D) or uniaxial strain (1D): F is embedded
 // in 3x3 with unit out-of-plane stretch, H's out-of-plane diagonal is that of cof(F) (in plane
