@@ -79,6 +79,13 @@ public:
     void step(double dt) override;
     ParticleSetBase& particles() override { return *particles_; }
     std::optional<double> internalEnergy() const override;
+    // The energy budget's two other terms, each since construction (TlSphSolver.cpp, the energy
+    // budget): the energy the stabilisation and the projections removed from K + U, and the work
+    // of the boundary conditions and body forces.
+    std::optional<double> schemeDissipation() const override { return schemeDissipation_; }
+    std::optional<double> externalWork() const override { return externalWork_; }
+    // hourglass, neighbourDeficiency, compression (TlSphSolver.cpp; TlSphHealth.hpp).
+    std::vector<HealthIndicator> healthIndicators() const override;
     std::vector<std::string> summary(double loopSeconds) const override;
 
     // Sigma V |L[p]| h^2 / Sigma V |p| over the particles (p the pressure): the pressure
@@ -154,6 +161,16 @@ private:
     double energyGrowthLimit_ = 1.5;
     std::optional<double> energyStart_;
     double externalWork_ = 0, energyInput_ = 0, stagePower_ = 0, startSpeed_ = 0;
+    // The energy budget (TlSphSolver.cpp): the energy the scheme removed since construction, the
+    // last stage's dissipation power, per particle of a stage V_a (v_a . (-T_a) - Sigma_J,a D(J)_a),
+    // and per material how D(J) changes its stored energy (1: at dU/dJ, the law's pressure; 0: the
+    // law's energy does not read the evolved J; -1: neither, D(J)'s work left out of the budget).
+    double schemeDissipation_ = 0, stageDissipation_ = 0;
+    std::vector<double> stageWork_;
+    std::vector<int> jacobianWork_;
+    // neighbourDeficiency is of the reference configuration: computed at the first call, kept.
+    mutable std::optional<HealthIndicator> neighbourDeficiency_;
+    std::vector<double> stretch_;  // per particle, the time-step vote's scratch
     int stepsSinceEnergyCheck_ = 0;
     double spacing_ = 0, h_ = 0, cpMax_ = 0;
     double csMax_ = 0;  // the largest shear-wave speed sqrt(mu/rho0), for the JST momentumSpeed shear
