@@ -295,16 +295,23 @@ Health::Budget Health::measureBudget() const {
     const FieldBase* mass = fields.findField("mass");
     const FieldBase* velocity = fields.findField("velocity");
     Budget b;
+    const std::optional<double> internal = context().internalEnergy(), potential = context().potentialEnergy(),
+                                dissipated = context().schemeDissipation(), work = context().externalWork();
+    b.hasInternal = internal.has_value();
+    b.hasPotential = potential.has_value();
+    b.hasDissipated = dissipated.has_value();
+    b.hasWork = work.has_value();
     if (velocity)
         b.kinetic = GlobalReduce::sum<double>(n, [&](std::size_t i) {
             double v2 = 0;
             for (int d = 0; d < velocity->components(); ++d) v2 += velocity->component(i, d) * velocity->component(i, d);
             return 0.5 * (mass ? mass->component(i, 0) : 1.0) * v2;
         });
-    b.internal = context().internalEnergy().value_or(0.0);
-    b.potential = context().potentialEnergy().value_or(0.0);
-    b.dissipated = context().schemeDissipation().value_or(0.0);
-    b.work = context().externalWork().value_or(0.0);
+    // Each hook once: tlSph's internal energy evaluates the law at every particle.
+    b.internal = internal.value_or(0.0);
+    b.potential = potential.value_or(0.0);
+    b.dissipated = dissipated.value_or(0.0);
+    b.work = work.value_or(0.0);
     return b;
 }
 
@@ -322,10 +329,10 @@ void Health::write() {
     const std::vector<HealthIndicator> indicators = context().healthIndicators();
     if (!csv_) {
         std::vector<std::string> columns{"time", "step", "stableDeltaT", "stableDeltaTRatio", "kineticEnergy"};
-        if (context().internalEnergy()) columns.push_back("internalEnergy");
-        if (context().potentialEnergy()) columns.push_back("potentialEnergy");
-        if (context().schemeDissipation()) columns.push_back("dissipated");
-        if (context().externalWork()) columns.push_back("externalWork");
+        if (b.hasInternal) columns.push_back("internalEnergy");
+        if (b.hasPotential) columns.push_back("potentialEnergy");
+        if (b.hasDissipated) columns.push_back("dissipated");
+        if (b.hasWork) columns.push_back("externalWork");
         for (const char* c : {"energyImbalance", "relativeImbalance", "outsideDomain"}) columns.push_back(c);
         for (const auto& indicator : indicators) {
             indicatorNames_.push_back(indicator.name);
@@ -340,10 +347,10 @@ void Health::write() {
     const double vote = time.lastVote().deltaT;
     std::vector<double> row{time.value(), double(time.timeIndex()), vote,
                             firstVote_ > 0 && std::isfinite(vote) ? vote / firstVote_ : 1.0, b.kinetic};
-    if (context().internalEnergy()) row.push_back(b.internal);
-    if (context().potentialEnergy()) row.push_back(b.potential);
-    if (context().schemeDissipation()) row.push_back(b.dissipated);
-    if (context().externalWork()) row.push_back(b.work);
+    if (first_->hasInternal) row.push_back(b.internal);
+    if (first_->hasPotential) row.push_back(b.potential);
+    if (first_->hasDissipated) row.push_back(b.dissipated);
+    if (first_->hasWork) row.push_back(b.work);
     row.insert(row.end(), {imbalance, lastImbalance_, double(outsideCount_)});
     for (std::size_t k = 0; k < indicatorNames_.size(); ++k) {
         const HealthIndicator* found = nullptr;
@@ -379,8 +386,8 @@ std::vector<std::string> Health::summary() const {
     s << "energy imbalance " << number(100 * lastImbalance_, "%+.3g") << "% (largest "
       << number(100 * largestImbalance_, "%.3g") << "%) of " << number(energyScale_);
     std::string unmeasured;
-    if (!context().schemeDissipation()) unmeasured += "the scheme's dissipation";
-    if (!context().externalWork()) unmeasured += std::string(unmeasured.empty() ? "" : " and ") + "external work";
+    if (first_ && !first_->hasDissipated) unmeasured += "the scheme's dissipation";
+    if (first_ && !first_->hasWork) unmeasured += std::string(unmeasured.empty() ? "" : " and ") + "external work";
     if (!unmeasured.empty()) s << " (includes " << unmeasured << ": not measured)";
     s << "; stable time step down to " << number(smallestVoteRatio_, "%.3g") << " of its first";
     if (!smallestVoteReason_.empty() && smallestVoteRatio_ < 1) s << " (" << smallestVoteReason_ << ")";

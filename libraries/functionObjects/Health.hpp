@@ -26,6 +26,7 @@ private:
     std::string describeParticle(std::int64_t id) const;
     struct Budget {
         double kinetic = 0, internal = 0, potential = 0, dissipated = 0, work = 0;
+        bool hasInternal = false, hasPotential = false, hasDissipated = false, hasWork = false;
         double total() const { return kinetic + internal + potential; }
     };
     Budget measureBudget() const;
