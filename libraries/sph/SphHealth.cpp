@@ -21,7 +21,7 @@
 //                        distance against the spacing the particle's own volume implies (its own
 //                        mirror image left out): about 1 on any regular lattice (1.07 hexagonal),
 //                        so q_a < 1/2 is two particles within half a spacing, a clump no lattice
-//                        and no smooth compression makes. value: the smallest q_a in tension (NaN
+//                        and no smooth compression makes. value: the smallest q_a in tension (1
 //                        when no particle is in tension).
 //   hourglass            the reproduction error of the velocity field (the idea of Ganzenmüller
 //                        2015, Comput. Methods Appl. Mech. Engrg. 286:87: the pair's actual relative
@@ -207,11 +207,12 @@ std::vector<HealthIndicator> sphHealthIndicators(const SphHealthState<Dim>& s) {
                   d + " = " + number(deficiencyThreshold) +
                   ", below a box corner's: a particle that lost its neighbours"};
     out[1] = {"tensileInstability",
-              sums.nearest.particle() >= 0 ? sums.nearest.value : std::numeric_limits<double>::quiet_NaN(),
+              // 1 when none is in tension: no clumping to report, and no NaN in health.csv.
+              sums.nearest.particle() >= 0 ? sums.nearest.value : 1.0,
               std::size_t(sums.clumped), sums.nearest.particle(),
               "among particles in tension (P < 0, or a principal stress of -P I + tau above 0) the smallest "
-              "nearest-neighbour distance over the spacing (m/rho)^(1/d) (not a number when none is in "
-              "tension); counted: "
+              "nearest-neighbour distance over the spacing (m/rho)^(1/d) (1 when none is in tension); "
+              "counted: "
               "below " +
                   number(tensileClumpRatio) + ", particles clumping in pairs (Swegle, Hicks & Attaway 1995)"};
     const bool mode = sums.mode.value < 0;  // some e_a > 0 (else no particle is named)

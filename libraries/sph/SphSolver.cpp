@@ -433,6 +433,10 @@ void SphSolver<Dim>::computeEquationOfState() {
         const EquationOfState& eos = *materials_[material_[i]].eos;
         const double e = e_ ? (*e_)[i] : 0.0;
         eos.evaluate(1, &rho_[i], &e, &p_[i], &c_[i]);
+        // A model gives c = NaN where c^2 < 0 (EquationOfState::evaluate); the state check still
+        // stops on c = 0 and describes c^2 from the model, and the failing state written for
+        // diagnosis holds no NaN that the state did not already have.
+        if (std::isnan(c_[i]) && std::isfinite(rho_[i]) && std::isfinite(e)) c_[i] = 0.0;
     });
     particles_->copyToGhosts(p_);
     particles_->copyToGhosts(c_);
@@ -826,8 +830,10 @@ void SphSolver<Dim>::stepPredictorCorrector(double dt) {
     started_ = true;
     previousDeltaT_ = dt;
     timed.stop();
-    updateSmoothingLength();
+    // Checked before h follows the density: a density through zero would make h NaN, in the
+    // state written for diagnosis too.
     checkState("integrate");
+    updateSmoothingLength();
 }
 
 template <int Dim>
@@ -890,8 +896,10 @@ void SphSolver<Dim>::step(double dt) {
     previousDeltaT_ = dt;
     ratesValid_ = false;
     timed.stop();
-    updateSmoothingLength();
+    // Checked before h follows the density: a density through zero would make h NaN, in the
+    // state written for diagnosis too.
     checkState("integrate");
+    updateSmoothingLength();
 }
 
 template <int Dim>
@@ -913,20 +921,32 @@ void SphSolver<Dim>::checkState(const char* phaseName) const {
           << p_[i] << ", sound speed " << c_[i] << ", h " << h_[i];
         if (e_) s << ", e " << (*e_)[i];
         s << ", |v| " << v_[i].norm() << "; " << count << " particles affected";
-        if (std::isfinite(rho_[i]) && !(c_[i] > 0)) {
+        if (std::isfinite(rho_[i]) && !(rho_[i] > 0)) {
+            s << "\n    the density has fallen through zero. Remedy: lower maxCo; beside a particle of "
+                 "much larger mass (an interface between materials at one lattice spacing, a density "
+                 "ratio of hundreds) the continuity density's artificial mass flux moves density "
+                 "between unequal masses: switch it off (constant/sphProperties: dissipation { density "
+                 "(0 0); }) or take the summation density (densityScheme { form summation; })";
+        } else if (std::isfinite(rho_[i]) && !(c_[i] > 0)) {
             // The two ways out of an equation of state's range call for different remedies: a
             // compressed, little-heated state (the constant-Gamma factor of mieGruneisen) or an
             // expanded one (strong tension: the uncut pressure far below zero, which a particle
             // under a minimumPressure cut-off reaches by expanding freely).
             const double rho0 = materials_[material_[i]].eos->referenceDensity();
-            s << "\n    the equation of state gives c^2 <= 0 at this state (density " << rho_[i];
+            const EquationOfState& eos = *materials_[material_[i]].eos;
+            s << "\n    the equation of state gives c^2 <= 0 (c^2 = " << eos.soundSpeedSquared(rho_[i], e_ ? (*e_)[i] : 0.0)
+              << ") at this state (density " << rho_[i];
             if (rho_[i] < rho0)
                 s << ", " << rho_[i] / rho0 << " of rho0 " << rho0
                   << "): the state has left the model's range of validity in tension (for "
                      "mieGruneisen, the uncut pressure far below zero; a minimumPressure cut-off clamps "
                      "P, not c^2, so a particle held at the cut-off expands freely until c^2 turns "
                      "negative: spalled material, which no failure model removes yet; without the "
-                     "cut-off the tension holds it back)";
+                     "cut-off the tension holds it back; for tillotson, the cold expanded branch "
+                     "A mu + B mu^2 dominates below rho0 and e < Ecv: tens of GPa of tension). Remedy: "
+                     "the material has spalled, and mfdyn has no failure model yet to release it: a "
+                     "run past this point needs a lower impact speed or an equation of state whose "
+                     "tension limit also bounds c^2";
             else
                 s << ", " << rho_[i] / rho0 << " of rho0 " << rho0
                   << "): the state has left the model's range of validity in compression (for "
