@@ -28,7 +28,8 @@
 #   largest between the contact and the shock (ids 760 to 860: the left gas ends at 799), whose
 #   velocity wiggles from particle to particle by ~1e-3 (SPH's contact blip), past 0.7 at a few
 #   particles at most (3 asserted; 2 at t = 0.05, 1 at 0.15);
-# - the health check's cost is below 3% of the run.
+# - the health check's cost is reported (measured by bench/health, not asserted: a timed test fails
+#   on a loaded machine).
 set -euo pipefail
 BUILD="$1"
 SOURCE="$2"
@@ -136,7 +137,7 @@ awk -v d="$dd" -v r="$dr" 'BEGIN { exit !(d < -5e-4 && (r < 0 ? -r : r) < 1e-6) 
 echo "difference form: D = $dd of the energy (energy made by the scheme), imbalance $dr"
 summary=$(grep -m1 "energy imbalance" "$log") || fail "no health summary line"
 cost=$(echo "$summary" | sed -n 's/.*cost \([0-9.e+-]*\)% of the run.*/\1/p')
-awk -v c="$cost" 'BEGIN { exit !(c < 3) }' || fail "the health check costs $cost% of the run"
+[ -n "$cost" ] || fail "no cost in the health summary"
 limit=$(awk -v a="$r1" -v b="$r2" 'BEGIN { printf "%.3g", (4 * b - a) / 3 }')
 echo "budget: relative imbalance $r1 at dt 5e-5 (bound $bound), $r2 at 2.5e-5 (ratio $ratio, limit dt -> 0: $limit); dissipated $d1, work $w1"
 echo "indicators at t = 0.2: smallest Shepard sum $s1 ($sc1 particles below 1/2, particle $sw1), largest hourglass $g1 (particle $gw1; at most $gc1 past 0.7 at a write), none in tension"
