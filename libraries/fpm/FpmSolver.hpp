@@ -48,6 +48,8 @@ public:
     // energy sum V (S : S / (4 mu) + p^2 / (2 K)), K = rho c^2 of the step's start, where the
     // shear or Euler part runs; none for the rotation part alone.
     std::optional<double> internalEnergy() const override;
+    // neighbourDeficiency and fitConditioning of the fit the next step makes (FpmSolver.cpp).
+    std::vector<HealthIndicator> healthIndicators() const override;
 
     // The rotation-only reference (see the top of this file), measured after each step.
     struct RotationError {

@@ -154,6 +154,9 @@ void MpmSolver<Dim>::readMaterials() {
     assignMaterials(*particles_, materials_->names(), materialProperties_);
     material_ = &particles_->integerField("material");
     ul_ = std::make_unique<UpdatedLagrangianStress<Dim>>(*materials_, *particles_);
+    materialWaveSpeed_.assign(materials_->size(), 0.0);
+    for (std::size_t k = 0; k < materials_->size(); ++k)
+        if (!ul_->handles(std::int64_t(k))) materialWaveSpeed_[k] = (*materials_)[k].constitutiveLaw->pWaveSpeed();
 }
 
 template <int Dim>
@@ -301,39 +304,62 @@ void MpmSolver<Dim>::checkInsideGrid() {
 }
 
 template <int Dim>
+double MpmSolver<Dim>::waveSpeed(std::size_t i) const {
+    // An equation-of-state material's speed is the particle's own (its density and state); a
+    // constitutive law's is its material's, computed once (pWaveSpeed is not cheap).
+    const std::int64_t k = (*material_)[i];
+    return ul_->handles(k) ? ul_->waveSpeed(i, rho0_[i]) : materialWaveSpeed_[std::size_t(k)];
+}
+
+template <int Dim>
 TimeStepVote MpmSolver<Dim>::stableTimeStep() {
     // The CFL vote (note 2.7 [D]): dt = C min(dx) / max_p (c_p + |v_p|), c the p-wave speed of the
     // particle's material; a global vote (every rank steps with the same dt), one per material so
-    // that the progress line can name the limiting one.
+    // that the progress line can name the limiting one. The vote names its particle: the lowest
+    // global id among those at the limit (one more global reduction, for the winning limit only).
     const std::size_t n = x_.size();
+    auto speedOf = [&](std::size_t i) { return waveSpeed(i) + v_[i].norm(); };
     double speed = 0;
     std::size_t limiting = 0;
     for (std::size_t k = 0; k < materials_->size(); ++k) {
-        // An equation-of-state material's speed is the particle's own (its density and state).
-        const bool perParticle = ul_->handles(std::int64_t(k));
-        const double c = perParticle ? 0.0 : (*materials_)[k].constitutiveLaw->pWaveSpeed();
         const double s = GlobalReduce::max(n, [&](std::size_t i) {
-            if (std::int64_t(k) != (*material_)[i]) return 0.0;
-            return (perParticle ? ul_->waveSpeed(i, rho0_[i]) : c) + v_[i].norm();
+            return std::int64_t(k) == (*material_)[i] ? speedOf(i) : 0.0;
         });
         if (s > speed) speed = s, limiting = k;
     }
+    lastSpeed_ = speed;
     const double courant = time().maxCo(0.3);
     TimeStepVote vote{std::numeric_limits<double>::infinity(), "CFL"};
-    if (speed > 0)
-        vote = {courant * grid_.smallestCellSize() / speed,
-                "CFL (maxCo dx / (c + |v|), material " + materials_->names()[limiting] + ")"};
+    // Which particle limits: 0 the CFL, 1 the viscous limit (its value), -1 none.
+    int limit = -1;
+    double viscous = std::numeric_limits<double>::infinity();
+    const double dx = grid_.smallestCellSize();
+    auto viscousOf = [&](std::size_t i) {
+        return ul_->handles((*material_)[i]) ? ul_->viscousTimeStep(i, rho0_[i], dx)
+                                             : std::numeric_limits<double>::infinity();
+    };
+    if (speed > 0) {
+        vote = {courant * dx / speed, "CFL (maxCo dx / (c + |v|), material " + materials_->names()[limiting] + ")"};
+        limit = 0;
+    }
     if (ul_->any()) {
         // The viscous limit rho dx^2 / (4 mu) of the fluids (note 2.7 [D]), a global vote.
-        const double dx = grid_.smallestCellSize();
-        const double viscous = GlobalReduce::min(n, [&](std::size_t i) {
-            return ul_->handles((*material_)[i]) ? ul_->viscousTimeStep(i, rho0_[i], dx)
-                                                 : std::numeric_limits<double>::infinity();
-        });
-        if (viscous < vote.deltaT) vote = {viscous, "viscous (rho dx^2 / (4 mu))"};
+        viscous = GlobalReduce::min(n, viscousOf);
+        if (viscous < vote.deltaT) vote = {viscous, "viscous (rho dx^2 / (4 mu))"}, limit = 1;
     }
     if (bodyForce_)
-        if (auto force = bodyForce_->stableTimeStep(); force.deltaT < vote.deltaT) vote = force;
+        if (auto force = bodyForce_->stableTimeStep(); force.deltaT < vote.deltaT) vote = force, limit = -1;
+    if (limit >= 0) {
+        // The same expressions as the reductions above: the limit is one of these values exactly.
+        const std::vector<std::int64_t>& id = particles_->globalId();
+        double first = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < n; ++i)
+            if (limit == 0 ? (*material_)[i] == std::int64_t(limiting) && speedOf(i) >= speed
+                           : viscousOf(i) <= viscous)
+                first = std::min(first, double(id[i]));
+        first = globalMin(first);
+        if (std::isfinite(first)) vote.particle = std::int64_t(first);
+    }
     return vote;
 }
 
@@ -474,43 +500,54 @@ void MpmSolver<Dim>::solveGrid(double dt, double t) {
     const auto& momentum = *nodeMomentum_;
     const auto& force = *nodeForce_;
     const double alpha = damping_->coefficient();
+    // The energy budget's grid terms (step()): per node with m_I >= massCutoff, K^n = 1/2 m |v^n|^2
+    // of v^n = (mv)/m, K* = 1/2 m |v*|^2 of the solved v* = v^n + dt a, and the damping's work at
+    // the step's mid velocity, -alpha dt (mv) . (v^n + v*)/2 (so that K* - K^n is the work of f
+    // plus the damping's, exactly); fused into the solve's own pass over the nodes.
+    auto solve = [&](const std::vector<double>& m, const std::vector<Vector<Dim>>& mv,
+                     const std::vector<Vector<Dim>>& f, std::vector<Vector<Dim>>& vI, std::vector<Vector<Dim>>& aI) {
+        return GlobalReduce::sum<SumArray<3>>(vI.size(), [&](std::size_t I) {
+            SumArray<3> e;
+            if (m[I] >= massCutoff_) {
+                const Vector<Dim> v0 = mv[I] / m[I];
+                aI[I] = (f[I] - alpha * mv[I]) / m[I];
+                vI[I] = v0 + dt * aI[I];
+                e.s[0] = 0.5 * m[I] * v0.squaredNorm();
+                e.s[1] = 0.5 * m[I] * vI[I].squaredNorm();
+                e.s[2] = alpha == 0 ? 0.0 : -0.5 * alpha * dt * mv[I].dot(v0 + vI[I]);
+            } else {
+                aI[I] = Vector<Dim>::Zero();
+                vI[I] = Vector<Dim>::Zero();
+            }
+            return e;
+        });
+    };
+    SumArray<3> e;
     if (multi_) {
         // Each body's field on its own (note 2.4 as below), the contact correction where bodies
         // meet, then each body's grid conditions (the walls have the last word). The shared
         // field's v and a are not needed (writeGrid writes its mass, momentum and force).
-        for (std::size_t b = 0; b < bodyMass_.size(); ++b) {
-            const auto& mb = bodyMass_[b];
-            const auto& pb = bodyMomentum_[b];
-            const auto& fb = bodyNodeForce_[b];
-            auto& vb = bodyVelocity_[b];
-            auto& ab = bodyAcceleration_[b];
-            parallelFor(vb.size(), [&](std::size_t I) {
-                if (mb[I] >= massCutoff_) {
-                    ab[I] = (fb[I] - alpha * pb[I]) / mb[I];
-                    vb[I] = pb[I] / mb[I] + dt * ab[I];
-                } else {
-                    ab[I] = Vector<Dim>::Zero();
-                    vb[I] = Vector<Dim>::Zero();
-                }
-            });
-        }
+        for (std::size_t b = 0; b < bodyMass_.size(); ++b)
+            e += solve(bodyMass_[b], bodyMomentum_[b], bodyNodeForce_[b], bodyVelocity_[b], bodyAcceleration_[b]);
         correctContact(dt, true, t);
+        // The contact correction's loss (a perfectly plastic meeting of the nodes' velocities, and
+        // friction's) is the scheme's: it goes to the dissipated energy.
+        const double contacted = gridKinetic();
+        dissipated_ += e.s[1] - contacted;
+        e.s[1] = contacted;
         if (!gridConditions_.empty())
             for (std::size_t b = 0; b < bodyMass_.size(); ++b)
                 gridConditions_.apply(grid_, bodyVelocity_[b], &bodyAcceleration_[b], t + dt, dt);
-        return;
+    } else {
+        // Note 2.4 with the signs of the author's code: a = (f - alpha mv) / m, v = mv / m + a dt.
+        e = solve(mass, momentum, force, v, a);
+        if (!gridConditions_.empty()) gridConditions_.apply(grid_, v, &a, t + dt, dt);
     }
-    // Note 2.4 with the signs of the author's code: a = (f - alpha mv) / m, v = mv / m + a dt.
-    parallelFor(v.size(), [&](std::size_t I) {
-        if (mass[I] >= massCutoff_) {
-            a[I] = (force[I] - alpha * momentum[I]) / mass[I];
-            v[I] = momentum[I] / mass[I] + dt * a[I];
-        } else {
-            a[I] = Vector<Dim>::Zero();
-            v[I] = Vector<Dim>::Zero();
-        }
-    });
-    if (!gridConditions_.empty()) gridConditions_.apply(grid_, v, &a, t + dt, dt);
+    // The grid conditions' work: the kinetic energy they add to the nodes (a wall's is a loss).
+    const double constrained = gridConditions_.empty() ? e.s[1] : gridKinetic();
+    gridKineticStart_ = e.s[0];
+    gridKineticSolved_ = constrained;
+    externalWork_ += e.s[2] + (constrained - e.s[1]);
 }
 
 template <int Dim>
@@ -814,6 +851,7 @@ void MpmSolver<Dim>::correctContact(double dt, bool afterForce, double t) {
 template <int Dim>
 void MpmSolver<Dim>::step(double dt) {
     const double t = time().value();
+    const double kineticStart = particleKinetic();
     evaluateShapeFunctions();
     {
         auto timed = phase("particleToGrid");
@@ -834,6 +872,11 @@ void MpmSolver<Dim>::step(double dt) {
     }
     solveGrid(dt, t);
     gridToParticles(dt);
+    // The transfers' loss (the energy budget's D): what P2G loses from the particles' kinetic
+    // energy to the grid's (K_p^n - K^n) and G2P from the grid's constrained one to the particles'
+    // new one (K+ - K_p^{n+1}); the solve between them is physics (f's work) and the grid
+    // conditions' part is external work (solveGrid).
+    dissipated_ += (kineticStart - gridKineticStart_) + (gridKineticSolved_ - particleKinetic());
     if (order == MpmScheme::StressUpdate::modifiedLast) {
         // MUSL: the updated particle velocities mapped back, v_I = sum N m v_p^{n+1} / m_I.
         auto timed = phase("particleToGrid");
@@ -846,6 +889,104 @@ void MpmSolver<Dim>::step(double dt) {
     }
     particleSteps_ += std::int64_t(x_.size());
     checkFinite("step");
+}
+
+template <int Dim>
+double MpmSolver<Dim>::particleKinetic() const {
+    return GlobalReduce::sum<double>(x_.size(), [&](std::size_t i) { return 0.5 * m_[i] * v_[i].squaredNorm(); });
+}
+
+template <int Dim>
+double MpmSolver<Dim>::gridKinetic() const {
+    // The nodes the solve updates (m_I >= massCutoff; the others' v is 0). A grid split over ranks
+    // would sum the nodes each owns.
+    auto kinetic = [&](const std::vector<double>& m, const std::vector<Vector<Dim>>& v) {
+        return GlobalReduce::sum<double>(v.size(), [&](std::size_t I) {
+            return m[I] >= massCutoff_ ? 0.5 * m[I] * v[I].squaredNorm() : 0.0;
+        });
+    };
+    if (!multi_) return kinetic(*nodeMass_, *nodeVelocity_);
+    double k = 0;
+    for (std::size_t b = 0; b < bodyMass_.size(); ++b) k += kinetic(bodyMass_[b], bodyVelocity_[b]);
+    return k;
+}
+
+template <int Dim>
+std::optional<DomainBox> MpmSolver<Dim>::domain() const {
+    // With outsideGrid remove a particle may leave (it is removed and its mass reported).
+    if (removeOutside_) return std::nullopt;
+    DomainBox box;
+    const Vector<Dim> lo = grid_.origin(), hi = grid_.upperCorner();
+    for (int d = 0; d < Dim; ++d) {
+        // contains()'s tolerance of 1e-12 of a cell, so that both say the same.
+        const double tolerance = 1e-12 * grid_.cellSize()[d];
+        box.min[std::size_t(d)] = lo[d] - tolerance;
+        box.max[std::size_t(d)] = hi[d] + tolerance;
+    }
+    return box;
+}
+
+template <int Dim>
+std::vector<HealthIndicator> MpmSolver<Dim>::healthIndicators() const {
+    // smallMassNodes: the small-mass problem of MPM (a node at the edge of the body that only the
+    // tails of the shape functions reach: m_I = sum N_Ip m_p tiny while grad N_Ip is not, so the
+    // node's acceleration f_I / m_I and through L = sum v_I (x) grad N_Ip the stress blow up;
+    // Sulsky, Zhou & Schreyer 1995; Steffen, Kirby & Berzins 2008; de Vaucorbeil et al. 2020,
+    // section 4). Measured as the node's own explicit-stability number: with the lumped mass m_I
+    // and the diagonal stiffness K_II = sum_p V_p grad N_Ip . C grad N_Ip <= sum_p m_p c_p^2
+    // |grad N_Ip|^2 (rho_p V_p = m_p, C's largest eigenvalue rho c_p^2 along grad N), the Rayleigh
+    // quotient omega_I^2 = K_II / m_I bounds the largest frequency of the linearised step from
+    // below, so dt omega_I / 2 > 1 proves the central-difference (symplectic Euler) step unstable
+    // at that node. Value: the largest dt omega_I / 2 over the solved nodes (m_I >= massCutoff;
+    // an interior node of a uniform body with linear hats has about Co / sqrt(2) in 1D); count:
+    // the particles reaching a node above 1 (N_Ip > 0); worst: the particle of lowest global id
+    // reaching the worst node. Over each
+    // body's own field under multiField. Computed at the health check's writes only.
+    HealthIndicator indicator{"smallMassNodes", 0.0, 0, -1,
+                              "max over the grid nodes of dt omega_I / 2, omega_I^2 = sum_p m_p c_p^2 "
+                              "|grad N_Ip|^2 / m_I (the node's Rayleigh quotient); counted: particles reaching a "
+                              "node above 1, where the explicit step is unstable (the small-mass problem, "
+                              "Sulsky et al. 1995)"};
+    const std::size_t n = x_.size(), nodes = grid_.nodeCount(), stride = list_.stride;
+    const std::size_t fields = multi_ ? bodyMass_.size() : 1;
+    const double dt = time().deltaT();
+    std::vector<double> stiffness(fields * nodes, 0.0);
+    const bool mapped = list_.count.size() == n && time().timeIndex() > 0;
+    if (mapped)
+        colouring_.forEachParticle([&](std::size_t p) {
+            const std::size_t offset = multi_ ? std::size_t((*region_)[p]) * nodes : 0;
+            const double mc2 = m_[p] * waveSpeed(p) * waveSpeed(p);
+            const std::size_t base = p * stride;
+            for (std::size_t k = 0; k < list_.count[p]; ++k)
+                stiffness[offset + list_.node[base + k]] += mc2 * list_.gradient[base + k].squaredNorm();
+        });
+    auto massOf = [&](std::size_t j) {
+        return multi_ ? bodyMass_[j / nodes][j % nodes] : (*nodeMass_)[j];
+    };
+    auto number = [&](std::size_t j) {
+        const double m = massOf(j);
+        return mapped && m >= massCutoff_ ? 0.5 * dt * std::sqrt(stiffness[j] / m) : 0.0;
+    };
+    indicator.value = GlobalReduce::max(fields * nodes, number);
+    // The largest number over the nodes particle p reaches (N_Ip > 0).
+    auto reached = [&](std::size_t p) {
+        if (!mapped) return 0.0;
+        const std::size_t offset = multi_ ? std::size_t((*region_)[p]) * nodes : 0;
+        const std::size_t base = p * stride;
+        double largest = 0;
+        for (std::size_t k = 0; k < list_.count[p]; ++k)
+            if (list_.weight[base + k] > 0) largest = std::max(largest, number(offset + list_.node[base + k]));
+        return largest;
+    };
+    indicator.count =
+        std::size_t(GlobalReduce::sum<double>(n, [&](std::size_t p) { return reached(p) > 1.0 ? 1.0 : 0.0; }));
+    double worst = std::numeric_limits<double>::infinity();
+    if (indicator.value > 0)
+        for (std::size_t p = 0; p < n; ++p)
+            if (reached(p) >= indicator.value) worst = std::min(worst, double(particles_->globalId()[p]));
+    worst = globalMin(worst);
+    if (std::isfinite(worst)) indicator.worst = std::int64_t(worst);
+    return {indicator};
 }
 
 template <int Dim>

@@ -82,6 +82,12 @@ public:
     ParticleSetBase& particles() override { return *particles_; }
     std::optional<double> internalEnergy() const override;
     std::optional<double> potentialEnergy() const override;
+    // The energy budget's transfer and boundary terms, summed over the steps (MpmSolver.cpp, step()).
+    std::optional<double> schemeDissipation() const override { return dissipated_; }
+    std::optional<double> externalWork() const override { return externalWork_; }
+    std::vector<HealthIndicator> healthIndicators() const override;
+    // The grid's box, where a particle must stay (outsideGrid stop); none with outsideGrid remove.
+    std::optional<DomainBox> domain() const override;
     std::vector<ExtraFile> extraOutput() const override;
     std::vector<std::string> summary(double loopSeconds) const override;
 
@@ -110,6 +116,9 @@ private:
     // sees a piece of one particle only. Union-find over the nodes (pieceParent_), rank-local.
     void checkTorn();
     void checkFinite(const char* phaseName) const;
+    // The p-wave speed of particle i's material (an equation of state's: the particle's own).
+    double waveSpeed(std::size_t i) const;
+    std::vector<double> materialWaveSpeed_;  // per material (0 for an equation of state's)
     // multiField: the per-body node fields, sized once; the contact correction of the velocity
     // (and acceleration, with the pair forces recorded, after the grid solve).
     void allocateBodyFields();
@@ -177,6 +186,15 @@ private:
     std::vector<Vector<Dim>> nodeX_;     // the node positions (APIC's x_I - x_p), made once
     std::vector<std::size_t> pieceParent_, pieceSize_, pieceRoot_;  // checkTorn: union-find, sizes, roots
     std::int64_t particleSteps_ = 0;
+
+    // The energy budget (step()): the kinetic energy the transfers lose, and the work of the grid
+    // conditions and the damping, summed since construction; the grid kinetic energies of the step.
+    double particleKinetic() const;
+    double gridKinetic() const;  // sum 1/2 m_I |v_I|^2 of the velocity the particles will read
+    double dissipated_ = 0, externalWork_ = 0;
+    double gridKineticStart_ = 0, gridKineticSolved_ = 0, dampingWork_ = 0;
+    // The largest c + |v| of the last vote (the small-mass indicator's Courant number).
+    double lastSpeed_ = 0;
 
     // multiField (empty under singleField): per body b the node arrays, b = the region id.
     bool multi_ = false;

@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# The health check on mpmFsi (issue 20), on the twoDisks tutorial (632 particles, 20 x 20 cells):
+# - a NaN planted in particle 3's velocity stops the run: status 1, the log names the health check,
+#   the particle, the component (velocity_x), the remedy, and the failing state is written;
+# - a speed of 1e8 m/s planted on particle 3 collapses the CFL vote (adjustTimeStep yes): the
+#   health check stops the run naming "collapsed" and particle 3 (the vote names its particle);
+# - particle 3 planted outside the grid (x = 5, the grid spans [0, 1]) stops the run naming it:
+#   the health check's domain is the grid's (MpmSolver::domain), and it runs before the next
+#   step's own outsideGrid check;
+# - the energy budget of the healthy run to t = 3 (the collision: contact from t = 1.22, the
+#   kinetic-energy minimum at 2.145): K + U + D - W (D the transfers' loss, W the grid conditions'
+#   and damping's work, both 0 here but D) stays within the bound of the time integration,
+#   |imbalance| <= omega_max dt (K + U) with omega_max = 2 sqrt(2) c_p / dx the highest frequency of
+#   the lumped bilinear grid (c_p = 1.16 m/s, dx = 0.05, dt = 1e-4: 6.6e-3): symplectic Euler keeps
+#   a modified energy within omega dt / 2 of the energy of each mode (the derivation is in
+#   MpmSolver.cpp, step()); and the health check's cost is below 3% of the run.
+set -euo pipefail
+BUILD="$1"
+SOURCE="$2"
+export PATH="$BUILD/bin:$PATH"
+export MFDYN_LIBRARY_PATH="$BUILD/testLibraries"
+WORK="$(mktemp -d "${TMPDIR:-/tmp}/mfdyn-health-mpm.XXXXXX")"
+trap 'rm -rf "$WORK"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+base="$WORK/base"
+cp -r "$SOURCE/tutorials/mpmFsi/twoDisks" "$base"
+rm -rf "$base"/log.* "$base"/postProcessing "$base"/[0-9]* "$base"/multiField
+particleGen -case "$base" > "$base/log.particleGen" 2>&1 || fail "particleGen: $(tail -n 5 "$base/log.particleGen")"
+
+# faultCase <name> <field> <component> <value> [adjust]: a copy run to t = 0.05 with the fault planted
+# at t = 0.01; its exit status in $status, its log in $log.
+faultCase() {
+    local c="$WORK/$1"
+    cp -r "$base" "$c"
+    sed -i 's/^endTime .*/endTime         0.05;/; s/^writeInterval .*/writeInterval   0.05;/' "$c/system/controlDict"
+    [ "${5:-}" = adjust ] && sed -i 's/^adjustTimeStep .*/adjustTimeStep  yes;/' "$c/system/controlDict"
+    # the tutorial's functions replaced: the plant, then the health check that must see it
+    sed -i '/^functions/,$d' "$c/system/controlDict"
+    cat >> "$c/system/controlDict" << EOF
+libs ("libplantFault.so");
+functions
+{
+    plant  { type plantFault; time 0.01; particle 3; field $2; component $3; value "$4"; }
+    health { type health; }
+}
+EOF
+    status=0
+    mpmFsi -case "$c" > "$c/log.mpmFsi" 2>&1 || status=$?
+    log="$c/log.mpmFsi"
+    grep -q "plantFault: $2 component $3 of particle 3 set to $4" "$log" || fail "$1: the fault was not planted: $(tail -n 5 "$log")"
+}
+expect() { grep -q -- "$2" "$log" || fail "$1: the log does not name '$2': $(grep -m1 -A3 "Error" "$log" || tail -n 5 "$log")"; }
+
+faultCase nan velocity 0 nan
+[ "$status" = 1 ] || fail "nan: exit status $status, not 1"
+for word in "health check" "particle 3 " "velocity_x = nan" "Remedy" "Wrote the failing state to"; do expect nan "$word"; done
+written=$(sed -n 's/.*Wrote the failing state to \([^ ]*\)\/.*/\1/p' "$log")
+[ -f "$WORK/nan/$written/particles.vtp" ] || fail "nan: the failing state $written/ was not written"
+echo "nan: stopped at $written: $(grep -m1 -o "health check.*particle 3 [^(]*" "$log")"
+
+faultCase speed velocity 0 1e8 adjust
+[ "$status" = 1 ] || fail "speed: exit status $status, not 1"
+for word in "health check" "collapsed" "particle 3 " "Remedy"; do expect speed "$word"; done
+echo "speed: $(grep -m1 -o 'the stable time step collapsed[^;]*; the limit: [^.]*' "$log")"
+
+faultCase outside position 0 5
+[ "$status" = 1 ] || fail "outside: exit status $status, not 1"
+for word in "health check" "particle 3 at (5 " "left the domain" "the method's domain" "Remedy"; do expect outside "$word"; done
+echo "outside: $(grep -m1 -o 'particle 3 at [^;]*' "$log")"
+
+# The healthy run to t = 3, the budget every 100 steps.
+c="$WORK/budget"
+cp -r "$base" "$c"
+sed -i 's/^    conserved .*/    health { type health; writeControl timeStep; writeInterval 100; }/' "$c/system/controlDict"
+grep -q "type health; writeControl timeStep" "$c/system/controlDict" || fail "could not set the health check's writes"
+mpmFsi -case "$c" > "$c/log.mpmFsi" 2>&1 || fail "the healthy run failed: $(tail -n 20 "$c/log.mpmFsi")"
+csv="$c/postProcessing/health/0/health.csv"
+[ -f "$csv" ] || fail "no $csv"
+read -r largest dissipated work smallMass < <(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) h[$i] = i; next }
+    { r = $h["relativeImbalance"]; if (r < 0) r = -r; if (r > w) w = r; d = $h["dissipated"]; x = $h["externalWork"]; s = $h["smallMassNodes"]; if (s > m) m = s }
+    END { printf "%.6g %.6g %.6g %.6g\n", w, d, x, m }' "$csv")
+bound=$(awk 'BEGIN { E = 1000; nu = 0.3; M = E * (1 - nu) / ((1 + nu) * (1 - 2 * nu)); c = sqrt(M / 1000); printf "%.4g\n", 2 * sqrt(2) * c / 0.05 * 1e-4 }')
+echo "budget: largest |imbalance| $largest of K + U (bound omega_max dt = $bound); transfers' loss D = $dissipated J/m, external work $work; smallMassNodes up to $smallMass"
+grep "energy imbalance" "$c/log.mpmFsi" | sed 's/^ *//'
+awk -v a="$largest" -v b="$bound" 'BEGIN { exit !(a <= b) }' || fail "the energy imbalance $largest exceeds the bound $bound"
+awk -v w="$work" 'BEGIN { exit !(w == 0) }' || fail "external work $work without grid conditions or damping"
+cost=$(sed -n 's/.*; cost \([0-9.e+-]*\)% of the run.*/\1/p' "$c/log.mpmFsi")
+echo "health cost $cost% of the run"
+awk -v c="$cost" 'BEGIN { exit !(c < 3) }' || fail "the health check costs $cost% of the run"
+echo "PASS: health.mpmFsi"
