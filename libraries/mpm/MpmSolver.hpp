@@ -49,6 +49,15 @@
 // and the remedies (or, with `outsideGrid remove;`, is removed with the mass lost logged); a
 // particle whose grid nodes carry no mass of any other particle (separated from its body by more
 // than the support: numerical fracture, the extension instability of note 6.2) stops the run.
+//
+// The health check (functionObjects/Health.hpp) sees the CFL vote's particle, the energy budget's
+// transfer loss D and the grid conditions' and damping's work W (MpmSolver.cpp), and the
+// small-mass indicator. It is not given the grid as its domain (RunContext::domain): the
+// solver's own check in preStep stops a particle outside the grid before it is mapped, naming it,
+// its body, the grid's span and the remedies (outsideGrid remove among them), and it runs after
+// the function objects, so that one that ends the run at a boundary (damBarrier's planeCrossing at
+// the open top y = 8) ends it cleanly; the health check's end-of-step test would stop it first.
+// A health { domainMin; domainMax; } box still applies.
 #include "functionObjects/CsvFile.hpp"
 #include "grid/CartesianGrid.hpp"
 #include "grid/gridBoundaryConditions/GridBoundaryCondition.hpp"
@@ -86,8 +95,6 @@ public:
     std::optional<double> schemeDissipation() const override { return dissipated_; }
     std::optional<double> externalWork() const override { return externalWork_; }
     std::vector<HealthIndicator> healthIndicators() const override;
-    // The grid's box, where a particle must stay (outsideGrid stop); none with outsideGrid remove.
-    std::optional<DomainBox> domain() const override;
     std::vector<ExtraFile> extraOutput() const override;
     std::vector<std::string> summary(double loopSeconds) const override;
 
@@ -192,7 +199,10 @@ private:
     double particleKinetic() const;
     double gridKinetic() const;  // sum 1/2 m_I |v_I|^2 of the velocity the particles will read
     double dissipated_ = 0, externalWork_ = 0;
-    double gridKineticStart_ = 0, gridKineticSolved_ = 0, dampingWork_ = 0;
+    double gridKineticStart_ = 0, gridKineticSolved_ = 0;
+    // v* after the solve and v^c after the contact correction, per node field (W's test of which
+    // components a condition set), kept only with grid conditions or damping.
+    std::vector<std::vector<Vector<Dim>>> solvedVelocity_, contactedVelocity_;
     // The largest c + |v| of the last vote (the small-mass indicator's Courant number).
     double lastSpeed_ = 0;
 
