@@ -818,7 +818,8 @@ TimeStepVote FpmSolver<Dim>::stableTimeStep() {
             if (euler_) {
                 const EquationOfState& eos = *(*materials_)[std::size_t(material[i])].eos;
                 const double e = e_ ? (*e_)[i] : 0.0;
-                c2 += literalSoundSpeed_ ? eos.densityDerivative(rho_[i], e) : eos.soundSpeedSquared(rho_[i], e);
+                c2 += literalSoundSpeed_ ? eos.densityDerivative(rho_[i], e)
+                                         : eos.soundSpeedSquared(rho_[i], e);
             }
             if (shear_) c2 += (2.0 - 2.0 / Dim) * mu_[i] / rho_[i];
             return std::sqrt(std::max(c2, 0.0)) + v_[i].norm();
@@ -1442,13 +1443,15 @@ std::vector<HealthIndicator> FpmSolver<Dim>::healthIndicators() const {
     // note's minimum, §2) or lambda_min / lambda_max below minReciprocalCondition fail the fit at
     // h: the step then stops, or falls back (fitFallback: a grown support, or Shepard's order 0,
     // which loses the gradient's consistency). Computed at the health check's writes only.
-    HealthIndicator neighbours{"neighbourDeficiency", 0.0, 0, -1,
-                               "smallest count of neighbours of positive fit weight within h (self "
-                               "included); counted: particles below the fit's minimum max(basis size, 2(d + 1))"};
-    HealthIndicator conditioning{"fitConditioning", 0.0, 0, -1,
-                                 "smallest reciprocal condition number lambda_min / lambda_max of the fit's "
-                                 "moment matrix at h; counted: particles below the fit's minReciprocalCondition "
-                                 "(there the fit fails or falls back)"};
+    HealthIndicator neighbours{
+        "neighbourDeficiency", 0.0, 0, -1,
+        "smallest count of neighbours of positive fit weight within h (self "
+        "included); counted: particles below the fit's minimum max(basis size, 2(d + 1))"};
+    HealthIndicator conditioning{
+        "fitConditioning", 0.0, 0, -1,
+        "smallest reciprocal condition number lambda_min / lambda_max of the fit's "
+        "moment matrix at h; counted: particles below the fit's minReciprocalCondition "
+        "(there the fit fails or falls back)"};
     const std::size_t n = ownedParticles();
     const auto& options = fit_.options();
     const int m = fit_.basisSize();

@@ -188,7 +188,8 @@ void MpmSolver<Dim>::readMaterials() {
     ul_ = std::make_unique<UpdatedLagrangianStress<Dim>>(*materials_, *particles_);
     materialWaveSpeed_.assign(materials_->size(), 0.0);
     for (std::size_t k = 0; k < materials_->size(); ++k)
-        if (!ul_->handles(std::int64_t(k))) materialWaveSpeed_[k] = (*materials_)[k].constitutiveLaw->pWaveSpeed();
+        if (!ul_->handles(std::int64_t(k)))
+            materialWaveSpeed_[k] = (*materials_)[k].constitutiveLaw->pWaveSpeed();
 }
 
 template <int Dim>
@@ -354,9 +355,8 @@ TimeStepVote MpmSolver<Dim>::stableTimeStep() {
     double speed = 0;
     std::size_t limiting = 0;
     for (std::size_t k = 0; k < materials_->size(); ++k) {
-        const double s = GlobalReduce::max(n, [&](std::size_t i) {
-            return std::int64_t(k) == (*material_)[i] ? speedOf(i) : 0.0;
-        });
+        const double s = GlobalReduce::max(
+            n, [&](std::size_t i) { return std::int64_t(k) == (*material_)[i] ? speedOf(i) : 0.0; });
         if (s > speed) speed = s, limiting = k;
     }
     lastSpeed_ = speed;
@@ -371,7 +371,8 @@ TimeStepVote MpmSolver<Dim>::stableTimeStep() {
                                              : std::numeric_limits<double>::infinity();
     };
     if (speed > 0) {
-        vote = {courant * dx / speed, "CFL (maxCo dx / (c + |v|), material " + materials_->names()[limiting] + ")"};
+        vote = {courant * dx / speed,
+                "CFL (maxCo dx / (c + |v|), material " + materials_->names()[limiting] + ")"};
         limit = 0;
     }
     if (ul_->any()) {
@@ -531,7 +532,8 @@ void MpmSolver<Dim>::solveGrid(double dt, double t) {
     // (mv) / m and K* of the solved v* = v^n + dt a, over the solved nodes (m_I >= massCutoff),
     // fused into the solve's own pass.
     auto solve = [&](const std::vector<double>& m, const std::vector<Vector<Dim>>& mv,
-                     const std::vector<Vector<Dim>>& f, std::vector<Vector<Dim>>& vI, std::vector<Vector<Dim>>& aI) {
+                     const std::vector<Vector<Dim>>& f, std::vector<Vector<Dim>>& vI,
+                     std::vector<Vector<Dim>>& aI) {
         return GlobalReduce::sum<SumArray<2>>(vI.size(), [&](std::size_t I) {
             SumArray<2> e;
             if (m[I] >= massCutoff_) {
@@ -562,7 +564,8 @@ void MpmSolver<Dim>::solveGrid(double dt, double t) {
             e.s[0] = 0.5 * m[I] * vI[I].squaredNorm();
             for (int c = 0; c < Dim; ++c) {
                 const double vn = v0[c], vs = solved[I][c], vc = contacted[I][c], vp = vI[I][c];
-                e.s[1] += vp != vc ? 0.5 * m[I] * (vp * vp - vn * vn) - dt * f[I][c] * vp - 0.5 * m[I] * (vc * vc - vs * vs)
+                e.s[1] += vp != vc ? 0.5 * m[I] * (vp * vp - vn * vn) - dt * f[I][c] * vp -
+                                         0.5 * m[I] * (vc * vc - vs * vs)
                                    : -0.5 * alpha * dt * mv[I][c] * (vn + vs);
             }
             return e;
@@ -570,14 +573,18 @@ void MpmSolver<Dim>::solveGrid(double dt, double t) {
     };
     const bool conditions = !gridConditions_.empty();
     const std::size_t fields = multi_ ? bodyMass_.size() : 1;
-    auto massOf = [&](std::size_t b) -> const std::vector<double>& { return multi_ ? bodyMass_[b] : *nodeMass_; };
+    auto massOf = [&](std::size_t b) -> const std::vector<double>& {
+        return multi_ ? bodyMass_[b] : *nodeMass_;
+    };
     auto momentumOf = [&](std::size_t b) -> const std::vector<Vector<Dim>>& {
         return multi_ ? bodyMomentum_[b] : *nodeMomentum_;
     };
     auto forceOf = [&](std::size_t b) -> const std::vector<Vector<Dim>>& {
         return multi_ ? bodyNodeForce_[b] : *nodeForce_;
     };
-    auto velocity = [&](std::size_t b) -> std::vector<Vector<Dim>>& { return multi_ ? bodyVelocity_[b] : *nodeVelocity_; };
+    auto velocity = [&](std::size_t b) -> std::vector<Vector<Dim>>& {
+        return multi_ ? bodyVelocity_[b] : *nodeVelocity_;
+    };
     auto acceleration = [&](std::size_t b) -> std::vector<Vector<Dim>>& {
         return multi_ ? bodyAcceleration_[b] : *nodeAcceleration_;
     };
@@ -586,7 +593,8 @@ void MpmSolver<Dim>::solveGrid(double dt, double t) {
     // body's grid conditions (the walls have the last word). The shared field's v and a are not
     // needed then (writeGrid writes its mass, momentum and force).
     SumArray<2> e;
-    for (std::size_t b = 0; b < fields; ++b) e += solve(massOf(b), momentumOf(b), forceOf(b), velocity(b), acceleration(b));
+    for (std::size_t b = 0; b < fields; ++b)
+        e += solve(massOf(b), momentumOf(b), forceOf(b), velocity(b), acceleration(b));
     const bool budget = conditions || alpha != 0;  // else W = 0 exactly, K+ = K^c
     solvedVelocity_.resize(budget ? fields : 0);
     for (std::size_t b = 0; b < solvedVelocity_.size(); ++b) solvedVelocity_[b] = velocity(b);
@@ -602,7 +610,8 @@ void MpmSolver<Dim>::solveGrid(double dt, double t) {
     contactedVelocity_.resize(budget && multi_ ? fields : 0);
     for (std::size_t b = 0; b < contactedVelocity_.size(); ++b) contactedVelocity_[b] = velocity(b);
     if (conditions)
-        for (std::size_t b = 0; b < fields; ++b) gridConditions_.apply(grid_, velocity(b), &acceleration(b), t + dt, dt);
+        for (std::size_t b = 0; b < fields; ++b)
+            gridConditions_.apply(grid_, velocity(b), &acceleration(b), t + dt, dt);
     gridKineticStart_ = e.s[0];
     gridKineticSolved_ = e.s[1];
     dissipated_ += contactLoss;
@@ -958,7 +967,8 @@ void MpmSolver<Dim>::step(double dt) {
 
 template <int Dim>
 double MpmSolver<Dim>::particleKinetic() const {
-    return GlobalReduce::sum<double>(x_.size(), [&](std::size_t i) { return 0.5 * m_[i] * v_[i].squaredNorm(); });
+    return GlobalReduce::sum<double>(x_.size(),
+                                     [&](std::size_t i) { return 0.5 * m_[i] * v_[i].squaredNorm(); });
 }
 
 template <int Dim>
@@ -992,11 +1002,12 @@ std::vector<HealthIndicator> MpmSolver<Dim>::healthIndicators() const {
     // the particles reaching a node above 1 (N_Ip > 0); worst: the particle of lowest global id
     // reaching the worst node. Over each
     // body's own field under multiField. Computed at the health check's writes only.
-    HealthIndicator indicator{"smallMassNodes", 0.0, 0, -1,
-                              "max over the grid nodes of dt omega_I / 2, omega_I^2 = sum_p m_p c_p^2 "
-                              "|grad N_Ip|^2 / m_I (the node's Rayleigh quotient); counted: particles reaching a "
-                              "node above 1, where the explicit step is unstable (the small-mass problem, "
-                              "Sulsky et al. 1995)"};
+    HealthIndicator indicator{
+        "smallMassNodes", 0.0, 0, -1,
+        "max over the grid nodes of dt omega_I / 2, omega_I^2 = sum_p m_p c_p^2 "
+        "|grad N_Ip|^2 / m_I (the node's Rayleigh quotient); counted: particles reaching a "
+        "node above 1, where the explicit step is unstable (the small-mass problem, "
+        "Sulsky et al. 1995)"};
     const std::size_t n = x_.size(), nodes = grid_.nodeCount(), stride = list_.stride;
     const std::size_t fields = multi_ ? bodyMass_.size() : 1;
     const double dt = time().deltaT();
@@ -1010,9 +1021,7 @@ std::vector<HealthIndicator> MpmSolver<Dim>::healthIndicators() const {
             for (std::size_t k = 0; k < list_.count[p]; ++k)
                 stiffness[offset + list_.node[base + k]] += mc2 * list_.gradient[base + k].squaredNorm();
         });
-    auto massOf = [&](std::size_t j) {
-        return multi_ ? bodyMass_[j / nodes][j % nodes] : (*nodeMass_)[j];
-    };
+    auto massOf = [&](std::size_t j) { return multi_ ? bodyMass_[j / nodes][j % nodes] : (*nodeMass_)[j]; };
     auto number = [&](std::size_t j) {
         const double m = massOf(j);
         return mapped && m >= massCutoff_ ? 0.5 * dt * std::sqrt(stiffness[j] / m) : 0.0;
@@ -1025,11 +1034,12 @@ std::vector<HealthIndicator> MpmSolver<Dim>::healthIndicators() const {
         const std::size_t base = p * stride;
         double largest = 0;
         for (std::size_t k = 0; k < list_.count[p]; ++k)
-            if (list_.weight[base + k] > 0) largest = std::max(largest, number(offset + list_.node[base + k]));
+            if (list_.weight[base + k] > 0)
+                largest = std::max(largest, number(offset + list_.node[base + k]));
         return largest;
     };
-    indicator.count =
-        std::size_t(GlobalReduce::sum<double>(n, [&](std::size_t p) { return reached(p) > 1.0 ? 1.0 : 0.0; }));
+    indicator.count = std::size_t(
+        GlobalReduce::sum<double>(n, [&](std::size_t p) { return reached(p) > 1.0 ? 1.0 : 0.0; }));
     double worst = std::numeric_limits<double>::infinity();
     if (indicator.value > 0)
         for (std::size_t p = 0; p < n; ++p)

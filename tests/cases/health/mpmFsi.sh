@@ -97,6 +97,29 @@ echo "budget: largest |imbalance| $largest of K + U (bound 2e / (1 - e) = $bound
 grep "energy imbalance" "$c/log.mpmFsi" | sed 's/^ *//'
 awk -v a="$largest" -v b="$bound" 'BEGIN { exit !(a <= b) }' || fail "the energy imbalance $largest exceeds the bound $bound"
 awk -v w="$work" 'BEGIN { exit !(w == 0) }' || fail "external work $work without grid conditions or damping"
+# spring1D (the hanging bar, gravity, grid damping alpha_d = 15 1/s, v_y = 0 on the top nodes), to
+# t = 2: W (the damping's and the fixed nodes') and D measured, the imbalance within the same
+# bound for the bar's grid (omega_max = 2 c / dy, c = sqrt(E / rho) = 8.165 m/s at nu = 0, dy =
+# 1/21, dt = 1e-4: 2e / (1 - e) = 0.0349) times the largest K + U, and no drift once the bar has
+# come to rest (t = 1 to 2: the imbalance changes by less than 1e-6 J; a fixed node's reaction
+# on the FLIP particles' persistent velocity there must not count as work).
+s="$WORK/spring"
+cp -r "$SOURCE/tutorials/mpmFsi/spring1D" "$s"
+rm -rf "$s"/log.* "$s"/postProcessing "$s"/[0-9]*
+sed -i 's/^    conserved .*/    health { type health; writeControl timeStep; writeInterval 100; }/' "$s/system/controlDict"
+grep -q "type health; writeControl timeStep" "$s/system/controlDict" || fail "could not set spring1D's health writes"
+particleGen -case "$s" > "$s/log.particleGen" 2>&1 || fail "particleGen on spring1D"
+mpmFsi -case "$s" > "$s/log.mpmFsi" 2>&1 || fail "spring1D failed: $(tail -n 20 "$s/log.mpmFsi")"
+read -r worst scale drift sW sD < <(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) h[$i] = i; next }
+    { r = $h["energyImbalance"]; a = r < 0 ? -r : r; if (a > w) w = a; e = $h["kineticEnergy"] + $h["internalEnergy"]; if (e > m) m = e
+      if ($1 + 0 == 1) one = r; if ($1 + 0 == 2) two = r; W = $h["externalWork"]; D = $h["dissipated"] }
+    END { d = two - one; if (d < 0) d = -d; printf "%.6g %.6g %.6g %.6g %.6g\n", w, m, d, W, D }' "$s/postProcessing/health/0/health.csv")
+springBound=$(awk -v m="$scale" 'BEGIN { e = 8.1649658 / (1 / 21) * 1e-4; printf "%.4g\n", 2 * e / (1 - e) * m }')
+echo "spring1D: largest |imbalance| $worst J/m (bound $springBound: 0.0349 of the largest K + U $scale), drift from t = 1 to 2 $drift J/m; W $sW, D $sD"
+awk -v a="$worst" -v b="$springBound" 'BEGIN { exit !(a <= b) }' || fail "spring1D's imbalance $worst exceeds $springBound"
+awk -v d="$drift" 'BEGIN { exit !(d < 1e-6) }' || fail "spring1D's imbalance drifts by $drift J/m at rest"
+awk -v w="$sW" 'BEGIN { exit !(w < -0.1) }' || fail "spring1D's external work $sW: the damping's is missing"
+
 cost=$(sed -n 's/.*; cost \([0-9.e+-]*\)% of the run.*/\1/p' "$c/log.mpmFsi")
 echo "health cost $cost% of the run"
 awk -v c="$cost" 'BEGIN { exit !(c < 10) }' || fail "the health check costs $cost% of the run"

@@ -435,7 +435,8 @@ TEST(MpmHealth, TransfersLossAndGridConditionsWorkByHand) {
         // M = E (1 - nu) / ((1 + nu) (1 - 2 nu)) (E = 1e4, nu = 0.3), in each V = 1e-3: 1.2e-6 =
         // 1.3e-5 K0 though the stress did no work (USL's stress lags the step; MpmSolver.cpp).
         const double Exx = 0.5 * ((1 - 1e-3 * u) * (1 - 1e-3 * u) - 1), M = 1e4 * 0.7 / (1.3 * 0.4);
-        EXPECT_NEAR(row["internalEnergy"], e.conditions.empty() ? 2 * 1e-3 * 0.5 * M * Exx * Exx : 0.0, 1e-15);
+        EXPECT_NEAR(row["internalEnergy"], e.conditions.empty() ? 2 * 1e-3 * 0.5 * M * Exx * Exx : 0.0,
+                    1e-15);
         fs::remove_all(dir);
     }
 }
