@@ -73,6 +73,7 @@
 #include "solver/SolverRegistry.hpp"
 #include "solver/SolverRun.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
@@ -797,12 +798,22 @@ void FpmSolver<Dim>::initialiseFields() {
 
 template <int Dim>
 TimeStepVote FpmSolver<Dim>::stableTimeStep() {
+    // The vote names its particle: the lowest global id among those at the limit (the same
+    // expression as the reduction, so the limit is one of its values exactly; one more reduction).
+    const auto limitedBy = [&](auto&& speedOf, double speed) {
+        double first = std::numeric_limits<double>::infinity();
+        const std::vector<std::int64_t>& id = owner_->globalId();
+        for (std::size_t i = 0; i < x_.size(); ++i)
+            if (speedOf(i) >= speed) first = std::min(first, double(id[i]));
+        first = globalMin(first);
+        return std::isfinite(first) ? std::int64_t(first) : std::int64_t(-1);
+    };
     if (euler_ || shear_) {
         // The note's [R] (doc/methods/fpm.md §3.5): dt = maxCo spacing / max (c_L + |v|), with
         // c_L^2 = c^2 + (2 - 2/d) mu / rho (c^2 the Euler part's, 0 without it; mu the shear part's),
         // the longitudinal wave of the full system (§1) in the particles' frame, plus their speed.
         const std::vector<std::int64_t>& material = owner_->integerField("material");
-        const double speed = GlobalReduce::max(x_.size(), [&](std::size_t i) {
+        const auto speedOf = [&](std::size_t i) {
             double c2 = 0;
             if (euler_) {
                 const EquationOfState& eos = *(*materials_)[std::size_t(material[i])].eos;
@@ -812,14 +823,16 @@ TimeStepVote FpmSolver<Dim>::stableTimeStep() {
             }
             if (shear_) c2 += (2.0 - 2.0 / Dim) * mu_[i] / rho_[i];
             return std::sqrt(std::max(c2, 0.0)) + v_[i].norm();
-        });
-        return {speed > 0 ? time().maxCo() * spacing_ / speed : std::numeric_limits<double>::infinity(),
-                "Courant (c_L + |v|)"};
+        };
+        const double speed = GlobalReduce::max(x_.size(), speedOf);
+        if (!(speed > 0)) return {std::numeric_limits<double>::infinity(), "Courant (c_L + |v|)"};
+        return {time().maxCo() * spacing_ / speed, "Courant (c_L + |v|)", limitedBy(speedOf, speed)};
     }
     if (!prescribed_) return {std::numeric_limits<double>::infinity(), "frozen particles"};
-    const double vmax =
-        std::sqrt(GlobalReduce::max(v_.size(), [&](std::size_t i) { return v_[i].squaredNorm(); }));
-    return {vmax > 0 ? time().maxCo() * spacing_ / vmax : std::numeric_limits<double>::infinity(), "Courant"};
+    const auto speedOf = [&](std::size_t i) { return v_[i].squaredNorm(); };
+    const double v2 = GlobalReduce::max(v_.size(), speedOf);
+    if (!(v2 > 0)) return {std::numeric_limits<double>::infinity(), "Courant"};
+    return {time().maxCo() * spacing_ / std::sqrt(v2), "Courant", limitedBy(speedOf, v2)};
 }
 
 template <int Dim>
@@ -1417,6 +1430,81 @@ std::optional<double> FpmSolver<Dim>::internalEnergy() const {
         if (K > 0) u += (*p_)[i] * (*p_)[i] / (2.0 * K);
         return V[i] * u;
     });
+}
+
+template <int Dim>
+std::vector<HealthIndicator> FpmSolver<Dim>::healthIndicators() const {
+    // The fit the next step makes (the particles where they are now, the rows within h): per
+    // particle the neighbours of positive fit weight (self included: the value form fits the
+    // point's own value) and the reciprocal condition number lambda_min / lambda_max of its moment
+    // matrix M = sum_b w_b p_b p_b^T (weights normalised, basis p of scaled offsets s = (x_b -
+    // x_a) / h, the Tikhonov shift as the fit applies it: LeastSquaresOperators.cpp, fitPoint).
+    // The thresholds are the fit's own: fewer than max(basis size, 2(d + 1)) neighbours (the
+    // note's minimum, §2) or lambda_min / lambda_max below minReciprocalCondition fail the fit at
+    // h: the step then stops, or falls back (fitFallback: a grown support, or Shepard's order 0,
+    // which loses the gradient's consistency). Computed at the health check's writes only.
+    HealthIndicator neighbours{
+        "neighbourDeficiency", 0.0, 0, -1,
+        "smallest count of neighbours of positive fit weight within h (self "
+        "included); counted: particles below the fit's minimum max(basis size, 2(d + 1))"};
+    HealthIndicator conditioning{
+        "fitConditioning", 0.0, 0, -1,
+        "smallest reciprocal condition number lambda_min / lambda_max of the fit's "
+        "moment matrix at h; counted: particles below the fit's minReciprocalCondition "
+        "(there the fit fails or falls back)"};
+    const std::size_t n = ownedParticles();
+    const auto& options = fit_.options();
+    const int m = fit_.basisSize();
+    const int minimum = std::max(m, options.minNeighbours);
+    NeighbourSearch<Dim> search(NeighbourDomain<Dim>{}, searchOptions());
+    const NeighbourList rows = search.build(x_, h_);
+    std::vector<double> count(n, 0.0), reciprocal(n, 0.0);
+    parallelFor(n, [&](std::size_t a) {
+        Eigen::MatrixXd M = Eigen::MatrixXd::Zero(m, m);
+        Eigen::VectorXd p(m);
+        double sum = 0;
+        int used = 0;
+        for (std::size_t k = rows.offsets()[a]; k < rows.offsets()[a + 1]; ++k) {
+            const std::size_t b = rows.indices()[k];
+            const double w = fitWeight_->fitWeight((x_[b] - x_[a]).norm(), h_);
+            if (!(w > 0)) continue;
+            ++used;
+            sum += w;
+            const Vector<Dim> s = (x_[b] - x_[a]) / h_;
+            int j = 0;
+            p(j++) = 1.0;
+            for (int d = 0; d < Dim; ++d) p(j++) = s(d);
+            if (options.order == 2) {
+                for (int d = 0; d < Dim; ++d) p(j++) = 0.5 * s(d) * s(d);
+                for (int d = 0; d < Dim; ++d)
+                    for (int e = d + 1; e < Dim; ++e) p(j++) = s(d) * s(e);
+            }
+            M.noalias() += w * p * p.transpose();
+        }
+        count[a] = used;
+        if (used < m || !(sum > 0)) return;  // M is singular: reciprocal condition 0
+        M /= sum;
+        if (options.tikhonov > 0) M.diagonal().array() += options.tikhonov * M.trace();
+        const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(M, Eigen::EigenvaluesOnly);
+        const auto& lambda = eigen.eigenvalues();
+        if (eigen.info() == Eigen::Success && lambda(m - 1) > 0)
+            reciprocal[a] = std::max(lambda(0), 0.0) / lambda(m - 1);
+    });
+    const std::vector<std::int64_t>& id = owner_->globalId();
+    // The worst particle: the lowest global id at the worst value, over every rank.
+    auto fill = [&](HealthIndicator& indicator, const std::vector<double>& value, double threshold) {
+        indicator.value = GlobalReduce::min(n, [&](std::size_t i) { return value[i]; });
+        indicator.count = std::size_t(
+            GlobalReduce::sum<double>(n, [&](std::size_t i) { return value[i] < threshold ? 1.0 : 0.0; }));
+        double first = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < n; ++i)
+            if (value[i] <= indicator.value) first = std::min(first, double(id[i]));
+        first = globalMin(first);
+        if (std::isfinite(first)) indicator.worst = std::int64_t(first);
+    };
+    fill(neighbours, count, double(minimum));
+    fill(conditioning, reciprocal, options.minReciprocalCondition);
+    return {neighbours, conditioning};
 }
 
 template <int Dim>

@@ -48,6 +48,15 @@ public:
     // energy sum V (S : S / (4 mu) + p^2 / (2 K)), K = rho c^2 of the step's start, where the
     // shear or Euler part runs; none for the rotation part alone.
     std::optional<double> internalEnergy() const override;
+    // neighbourDeficiency and fitConditioning of the fit the next step makes (FpmSolver.cpp).
+    // The energy budget's D and W are not measured (the health check's imbalance contains them):
+    // the central FPM operators are not skew-adjoint, so a stage's discrete "physical power"
+    // sum V (v . div sigma + sigma : grad v) is not a boundary term and its difference from the
+    // stage's change of K + U is the upwinding's loss and the central scheme's error together; and
+    // the free surface's resets (p = p_o, S n = 0, the characteristic velocity) change U and K by
+    // amounts that are part work of p_o and part the condition's own loss. A sound split needs the
+    // stage re-evaluated centrally (twice the cost) and a surface area per particle.
+    std::vector<HealthIndicator> healthIndicators() const override;
 
     // The rotation-only reference (see the top of this file), measured after each step.
     struct RotationError {

@@ -27,6 +27,38 @@
 // bodies meet, then each body's grid conditions; particle p takes x, v (G2P) and L from its own
 // body's v_bI and a_bI. USF and MUSL correct the velocity they take L from in the same way. With
 // linear hats and one body this is the single field exactly; singleField allocates none of it.
+//
+// The health check's energy budget (functionObjects/Health.cpp: K + U + Phi + D - W constant for a
+// scheme that loses nothing unaccounted). With K_p = sum_p 1/2 m_p |v_p|^2 and, over the solved
+// nodes (m_I >= massCutoff), K = sum_I 1/2 m_I |v_I|^2, a step takes the kinetic energy through
+//
+//     K_p^n --P2G--> K^n (v^n = (mv)/m) --solve--> K* (v*) [--contact--> K^c] --grid conditions-->
+//     K+ (v+) --G2P--> K_p^{n+1}
+//
+// and the budget's two measured terms are, summed over the steps:
+//   D (schemeDissipation)  the transfers' loss, which is no physics: (K_p^n - K^n) + (K+ - K_p^{n+1})
+//                          (PIC's averaging loses, >= 0 by Jensen; FLIP's noise either sign; APIC's
+//                          affine velocity is outside K_p, so its share shows here), plus under
+//                          multiField the contact correction's K* - K^c (the nodes of two bodies
+//                          meeting perfectly plastically, and friction)
+//   W (externalWork)       the work of the grid conditions and of the damping on the nodes, per
+//                          node I and component c: where a condition set it (v+ != v^c, the
+//                          velocity after the contact, v* without), its whole change of K less f's
+//                          work on the motion it leaves and the contact's change,
+//                          1/2 m (v+^2 - v^n^2) - dt f v+ - 1/2 m (v^c^2 - v*^2) (f = internal + body
+//                          force: a fixed node's reaction does no work, v+ = 0, and the kinetic
+//                          energy of a node it brings to rest is W); elsewhere the damping's work
+//                          at the step's mean velocity, -alpha dt (mv) (v^n + v*) / 2
+// so that K_p + D - W changes by exactly F = dt sum f . (v^n + v*) / 2 over the free components plus
+// dt sum f . v+ over the set ones, the work of f on the nodes' motion, and what remains of the
+// imbalance, R = F + dU + dPhi, is the time integration's: symplectic
+// Euler (v from the force at x^n, x from v^{n+1}; USL's stress of the step's start). On a linear
+// mode of frequency omega (q'' = -omega^2 q) it keeps H~ = H - dt omega^2 q v / 2 exactly, and
+// |omega^2 q v| <= omega H, so H^n / H^0 lies in [(1 - e) / (1 + e), (1 + e) / (1 - e)], e = omega
+// dt / 2: |R| <= 2e / (1 - e) (K + U) ~ omega_max dt (K + U) over the modes, omega_max the grid's
+// highest, 2 c_p / dx per axis (at most 2 sqrt(d) c_p / dx). Bounded and oscillating, no drift;
+// the nonlinear law and the cell crossings (the stiffness changes as particles move) lie outside
+// the argument (tests/cases/health/mpmFsi.sh: twoDisks, 0.36% of K + U against 6.6e-3).
 #include "mpm/MpmSolver.hpp"
 
 #include "core/KeywordSchema.hpp"
@@ -154,6 +186,10 @@ void MpmSolver<Dim>::readMaterials() {
     assignMaterials(*particles_, materials_->names(), materialProperties_);
     material_ = &particles_->integerField("material");
     ul_ = std::make_unique<UpdatedLagrangianStress<Dim>>(*materials_, *particles_);
+    materialWaveSpeed_.assign(materials_->size(), 0.0);
+    for (std::size_t k = 0; k < materials_->size(); ++k)
+        if (!ul_->handles(std::int64_t(k)))
+            materialWaveSpeed_[k] = (*materials_)[k].constitutiveLaw->pWaveSpeed();
 }
 
 template <int Dim>
@@ -301,39 +337,62 @@ void MpmSolver<Dim>::checkInsideGrid() {
 }
 
 template <int Dim>
+double MpmSolver<Dim>::waveSpeed(std::size_t i) const {
+    // An equation-of-state material's speed is the particle's own (its density and state); a
+    // constitutive law's is its material's, computed once (pWaveSpeed is not cheap).
+    const std::int64_t k = (*material_)[i];
+    return ul_->handles(k) ? ul_->waveSpeed(i, rho0_[i]) : materialWaveSpeed_[std::size_t(k)];
+}
+
+template <int Dim>
 TimeStepVote MpmSolver<Dim>::stableTimeStep() {
     // The CFL vote (note 2.7 [D]): dt = C min(dx) / max_p (c_p + |v_p|), c the p-wave speed of the
     // particle's material; a global vote (every rank steps with the same dt), one per material so
-    // that the progress line can name the limiting one.
+    // that the progress line can name the limiting one. The vote names its particle: the lowest
+    // global id among those at the limit (one more global reduction, for the winning limit only).
     const std::size_t n = x_.size();
+    auto speedOf = [&](std::size_t i) { return waveSpeed(i) + v_[i].norm(); };
     double speed = 0;
     std::size_t limiting = 0;
     for (std::size_t k = 0; k < materials_->size(); ++k) {
-        // An equation-of-state material's speed is the particle's own (its density and state).
-        const bool perParticle = ul_->handles(std::int64_t(k));
-        const double c = perParticle ? 0.0 : (*materials_)[k].constitutiveLaw->pWaveSpeed();
-        const double s = GlobalReduce::max(n, [&](std::size_t i) {
-            if (std::int64_t(k) != (*material_)[i]) return 0.0;
-            return (perParticle ? ul_->waveSpeed(i, rho0_[i]) : c) + v_[i].norm();
-        });
+        const double s = GlobalReduce::max(
+            n, [&](std::size_t i) { return std::int64_t(k) == (*material_)[i] ? speedOf(i) : 0.0; });
         if (s > speed) speed = s, limiting = k;
     }
+    lastSpeed_ = speed;
     const double courant = time().maxCo(0.3);
     TimeStepVote vote{std::numeric_limits<double>::infinity(), "CFL"};
-    if (speed > 0)
-        vote = {courant * grid_.smallestCellSize() / speed,
+    // Which particle limits: 0 the CFL, 1 the viscous limit (its value), -1 none.
+    int limit = -1;
+    double viscous = std::numeric_limits<double>::infinity();
+    const double dx = grid_.smallestCellSize();
+    auto viscousOf = [&](std::size_t i) {
+        return ul_->handles((*material_)[i]) ? ul_->viscousTimeStep(i, rho0_[i], dx)
+                                             : std::numeric_limits<double>::infinity();
+    };
+    if (speed > 0) {
+        vote = {courant * dx / speed,
                 "CFL (maxCo dx / (c + |v|), material " + materials_->names()[limiting] + ")"};
+        limit = 0;
+    }
     if (ul_->any()) {
         // The viscous limit rho dx^2 / (4 mu) of the fluids (note 2.7 [D]), a global vote.
-        const double dx = grid_.smallestCellSize();
-        const double viscous = GlobalReduce::min(n, [&](std::size_t i) {
-            return ul_->handles((*material_)[i]) ? ul_->viscousTimeStep(i, rho0_[i], dx)
-                                                 : std::numeric_limits<double>::infinity();
-        });
-        if (viscous < vote.deltaT) vote = {viscous, "viscous (rho dx^2 / (4 mu))"};
+        viscous = GlobalReduce::min(n, viscousOf);
+        if (viscous < vote.deltaT) vote = {viscous, "viscous (rho dx^2 / (4 mu))"}, limit = 1;
     }
     if (bodyForce_)
-        if (auto force = bodyForce_->stableTimeStep(); force.deltaT < vote.deltaT) vote = force;
+        if (auto force = bodyForce_->stableTimeStep(); force.deltaT < vote.deltaT) vote = force, limit = -1;
+    if (limit >= 0) {
+        // The same expressions as the reductions above: the limit is one of these values exactly.
+        const std::vector<std::int64_t>& id = particles_->globalId();
+        double first = std::numeric_limits<double>::infinity();
+        for (std::size_t i = 0; i < n; ++i)
+            if (limit == 0 ? (*material_)[i] == std::int64_t(limiting) && speedOf(i) >= speed
+                           : viscousOf(i) <= viscous)
+                first = std::min(first, double(id[i]));
+        first = globalMin(first);
+        if (std::isfinite(first)) vote.particle = std::int64_t(first);
+    }
     return vote;
 }
 
@@ -468,49 +527,101 @@ void MpmSolver<Dim>::nodeVelocityFromMomentum(double t) {
 template <int Dim>
 void MpmSolver<Dim>::solveGrid(double dt, double t) {
     auto timed = phase("gridSolve");
-    auto& v = *nodeVelocity_;
-    auto& a = *nodeAcceleration_;
-    const auto& mass = *nodeMass_;
-    const auto& momentum = *nodeMomentum_;
-    const auto& force = *nodeForce_;
     const double alpha = damping_->coefficient();
+    // The energy budget's grid terms (the header's equations): K^n = sum 1/2 m |v^n|^2 of v^n =
+    // (mv) / m and K* of the solved v* = v^n + dt a, over the solved nodes (m_I >= massCutoff),
+    // fused into the solve's own pass.
+    auto solve = [&](const std::vector<double>& m, const std::vector<Vector<Dim>>& mv,
+                     const std::vector<Vector<Dim>>& f, std::vector<Vector<Dim>>& vI,
+                     std::vector<Vector<Dim>>& aI) {
+        return GlobalReduce::sum<SumArray<2>>(vI.size(), [&](std::size_t I) {
+            SumArray<2> e;
+            if (m[I] >= massCutoff_) {
+                const Vector<Dim> v0 = mv[I] / m[I];
+                aI[I] = (f[I] - alpha * mv[I]) / m[I];
+                vI[I] = v0 + dt * aI[I];
+                e.s[0] = 0.5 * m[I] * v0.squaredNorm();
+                e.s[1] = 0.5 * m[I] * vI[I].squaredNorm();
+            } else {
+                aI[I] = Vector<Dim>::Zero();
+                vI[I] = Vector<Dim>::Zero();
+            }
+            return e;
+        });
+    };
+    // After the contact correction and the conditions, per node and component: K+, and W, the
+    // work of what acted on the nodes beside f: where a condition set the component (v+ != v^c),
+    // its whole change of K less f's work on the motion it leaves, 1/2 m (v+^2 - v^n^2) - dt f v+ -
+    // 1/2 m (v^c^2 - v*^2) (a fixed node's reaction does no work: v+ = 0; the kinetic energy it
+    // takes from a node brought to rest is W); elsewhere the damping's, -alpha dt (mv) (v^n + v*) / 2.
+    auto settled = [&](const std::vector<double>& m, const std::vector<Vector<Dim>>& mv,
+                       const std::vector<Vector<Dim>>& f, const std::vector<Vector<Dim>>& solved,
+                       const std::vector<Vector<Dim>>& contacted, const std::vector<Vector<Dim>>& vI) {
+        return GlobalReduce::sum<SumArray<2>>(vI.size(), [&](std::size_t I) {
+            SumArray<2> e;
+            if (!(m[I] >= massCutoff_)) return e;
+            const Vector<Dim> v0 = mv[I] / m[I];
+            e.s[0] = 0.5 * m[I] * vI[I].squaredNorm();
+            for (int c = 0; c < Dim; ++c) {
+                const double vn = v0[c], vs = solved[I][c], vc = contacted[I][c], vp = vI[I][c];
+                e.s[1] += vp != vc ? 0.5 * m[I] * (vp * vp - vn * vn) - dt * f[I][c] * vp -
+                                         0.5 * m[I] * (vc * vc - vs * vs)
+                                   : -0.5 * alpha * dt * mv[I][c] * (vn + vs);
+            }
+            return e;
+        });
+    };
+    const bool conditions = !gridConditions_.empty();
+    const std::size_t fields = multi_ ? bodyMass_.size() : 1;
+    auto massOf = [&](std::size_t b) -> const std::vector<double>& {
+        return multi_ ? bodyMass_[b] : *nodeMass_;
+    };
+    auto momentumOf = [&](std::size_t b) -> const std::vector<Vector<Dim>>& {
+        return multi_ ? bodyMomentum_[b] : *nodeMomentum_;
+    };
+    auto forceOf = [&](std::size_t b) -> const std::vector<Vector<Dim>>& {
+        return multi_ ? bodyNodeForce_[b] : *nodeForce_;
+    };
+    auto velocity = [&](std::size_t b) -> std::vector<Vector<Dim>>& {
+        return multi_ ? bodyVelocity_[b] : *nodeVelocity_;
+    };
+    auto acceleration = [&](std::size_t b) -> std::vector<Vector<Dim>>& {
+        return multi_ ? bodyAcceleration_[b] : *nodeAcceleration_;
+    };
+    // Note 2.4 with the signs of the author's code: a = (f - alpha mv) / m, v = mv / m + a dt; under
+    // multiField each body's field on its own, the contact correction where bodies meet, then each
+    // body's grid conditions (the walls have the last word). The shared field's v and a are not
+    // needed then (writeGrid writes its mass, momentum and force).
+    SumArray<2> e;
+    for (std::size_t b = 0; b < fields; ++b)
+        e += solve(massOf(b), momentumOf(b), forceOf(b), velocity(b), acceleration(b));
+    const bool budget = conditions || alpha != 0;  // else W = 0 exactly, K+ = K^c
+    solvedVelocity_.resize(budget ? fields : 0);
+    for (std::size_t b = 0; b < solvedVelocity_.size(); ++b) solvedVelocity_[b] = velocity(b);
+    double contactLoss = 0;
     if (multi_) {
-        // Each body's field on its own (note 2.4 as below), the contact correction where bodies
-        // meet, then each body's grid conditions (the walls have the last word). The shared
-        // field's v and a are not needed (writeGrid writes its mass, momentum and force).
-        for (std::size_t b = 0; b < bodyMass_.size(); ++b) {
-            const auto& mb = bodyMass_[b];
-            const auto& pb = bodyMomentum_[b];
-            const auto& fb = bodyNodeForce_[b];
-            auto& vb = bodyVelocity_[b];
-            auto& ab = bodyAcceleration_[b];
-            parallelFor(vb.size(), [&](std::size_t I) {
-                if (mb[I] >= massCutoff_) {
-                    ab[I] = (fb[I] - alpha * pb[I]) / mb[I];
-                    vb[I] = pb[I] / mb[I] + dt * ab[I];
-                } else {
-                    ab[I] = Vector<Dim>::Zero();
-                    vb[I] = Vector<Dim>::Zero();
-                }
-            });
-        }
         correctContact(dt, true, t);
-        if (!gridConditions_.empty())
-            for (std::size_t b = 0; b < bodyMass_.size(); ++b)
-                gridConditions_.apply(grid_, bodyVelocity_[b], &bodyAcceleration_[b], t + dt, dt);
-        return;
+        // The contact correction's loss (the nodes' velocities meeting perfectly plastically, and
+        // friction's) is the scheme's: it goes to the dissipated energy, as its change of K.
+        const double contacted = gridKinetic();
+        contactLoss = e.s[1] - contacted;
+        e.s[1] = contacted;
     }
-    // Note 2.4 with the signs of the author's code: a = (f - alpha mv) / m, v = mv / m + a dt.
-    parallelFor(v.size(), [&](std::size_t I) {
-        if (mass[I] >= massCutoff_) {
-            a[I] = (force[I] - alpha * momentum[I]) / mass[I];
-            v[I] = momentum[I] / mass[I] + dt * a[I];
-        } else {
-            a[I] = Vector<Dim>::Zero();
-            v[I] = Vector<Dim>::Zero();
-        }
-    });
-    if (!gridConditions_.empty()) gridConditions_.apply(grid_, v, &a, t + dt, dt);
+    contactedVelocity_.resize(budget && multi_ ? fields : 0);
+    for (std::size_t b = 0; b < contactedVelocity_.size(); ++b) contactedVelocity_[b] = velocity(b);
+    if (conditions)
+        for (std::size_t b = 0; b < fields; ++b)
+            gridConditions_.apply(grid_, velocity(b), &acceleration(b), t + dt, dt);
+    gridKineticStart_ = e.s[0];
+    gridKineticSolved_ = e.s[1];
+    dissipated_ += contactLoss;
+    if (!budget) return;
+    SumArray<2> after;
+    for (std::size_t b = 0; b < fields; ++b)
+        after += settled(massOf(b), momentumOf(b), forceOf(b), solvedVelocity_[b],
+                         multi_ ? contactedVelocity_[b] : solvedVelocity_[b], velocity(b));
+    gridKineticSolved_ = after.s[0];
+    externalWork_ += after.s[1];
 }
 
 template <int Dim>
@@ -814,6 +925,7 @@ void MpmSolver<Dim>::correctContact(double dt, bool afterForce, double t) {
 template <int Dim>
 void MpmSolver<Dim>::step(double dt) {
     const double t = time().value();
+    const double kineticStart = particleKinetic();
     evaluateShapeFunctions();
     {
         auto timed = phase("particleToGrid");
@@ -834,6 +946,11 @@ void MpmSolver<Dim>::step(double dt) {
     }
     solveGrid(dt, t);
     gridToParticles(dt);
+    // The transfers' loss (the energy budget's D, the header's equations): what P2G loses from the
+    // particles' kinetic energy to the grid's (K_p^n - K^n) and G2P from the grid's constrained one
+    // to the particles' new one (K+ - K_p^{n+1}); the solve between them is f's work and the grid
+    // conditions' and damping's (W, solveGrid).
+    dissipated_ += (kineticStart - gridKineticStart_) + (gridKineticSolved_ - particleKinetic());
     if (order == MpmScheme::StressUpdate::modifiedLast) {
         // MUSL: the updated particle velocities mapped back, v_I = sum N m v_p^{n+1} / m_I.
         auto timed = phase("particleToGrid");
@@ -846,6 +963,90 @@ void MpmSolver<Dim>::step(double dt) {
     }
     particleSteps_ += std::int64_t(x_.size());
     checkFinite("step");
+}
+
+template <int Dim>
+double MpmSolver<Dim>::particleKinetic() const {
+    return GlobalReduce::sum<double>(x_.size(),
+                                     [&](std::size_t i) { return 0.5 * m_[i] * v_[i].squaredNorm(); });
+}
+
+template <int Dim>
+double MpmSolver<Dim>::gridKinetic() const {
+    // The nodes the solve updates (m_I >= massCutoff; the others' v is 0). A grid split over ranks
+    // would sum the nodes each owns.
+    auto kinetic = [&](const std::vector<double>& m, const std::vector<Vector<Dim>>& v) {
+        return GlobalReduce::sum<double>(v.size(), [&](std::size_t I) {
+            return m[I] >= massCutoff_ ? 0.5 * m[I] * v[I].squaredNorm() : 0.0;
+        });
+    };
+    if (!multi_) return kinetic(*nodeMass_, *nodeVelocity_);
+    double k = 0;
+    for (std::size_t b = 0; b < bodyMass_.size(); ++b) k += kinetic(bodyMass_[b], bodyVelocity_[b]);
+    return k;
+}
+
+template <int Dim>
+std::vector<HealthIndicator> MpmSolver<Dim>::healthIndicators() const {
+    // smallMassNodes: the small-mass problem of MPM (a node at the edge of the body that only the
+    // tails of the shape functions reach: m_I = sum N_Ip m_p tiny while grad N_Ip is not, so the
+    // node's acceleration f_I / m_I and through L = sum v_I (x) grad N_Ip the stress blow up;
+    // Sulsky, Zhou & Schreyer 1995; Steffen, Kirby & Berzins 2008; de Vaucorbeil et al. 2020,
+    // section 4). Measured as the node's own explicit-stability number: with the lumped mass m_I
+    // and the diagonal stiffness K_II = sum_p V_p grad N_Ip . C grad N_Ip <= sum_p m_p c_p^2
+    // |grad N_Ip|^2 (rho_p V_p = m_p, C's largest eigenvalue rho c_p^2 along grad N), the Rayleigh
+    // quotient omega_I^2 = K_II / m_I bounds the largest frequency of the linearised step from
+    // below, so dt omega_I / 2 > 1 proves the central-difference (symplectic Euler) step unstable
+    // at that node. Value: the largest dt omega_I / 2 over the solved nodes (m_I >= massCutoff;
+    // an interior node of a uniform body with linear hats has about Co / sqrt(2) in 1D); count:
+    // the particles reaching a node above 1 (N_Ip > 0); worst: the particle of lowest global id
+    // reaching the worst node. Over each
+    // body's own field under multiField. Computed at the health check's writes only.
+    HealthIndicator indicator{
+        "smallMassNodes", 0.0, 0, -1,
+        "max over the grid nodes of dt omega_I / 2, omega_I^2 = sum_p m_p c_p^2 "
+        "|grad N_Ip|^2 / m_I (the node's Rayleigh quotient); counted: particles reaching a "
+        "node above 1, where the explicit step is unstable (the small-mass problem, "
+        "Sulsky et al. 1995)"};
+    const std::size_t n = x_.size(), nodes = grid_.nodeCount(), stride = list_.stride;
+    const std::size_t fields = multi_ ? bodyMass_.size() : 1;
+    const double dt = time().deltaT();
+    std::vector<double> stiffness(fields * nodes, 0.0);
+    const bool mapped = list_.count.size() == n && time().timeIndex() > 0;
+    if (mapped)
+        colouring_.forEachParticle([&](std::size_t p) {
+            const std::size_t offset = multi_ ? std::size_t((*region_)[p]) * nodes : 0;
+            const double mc2 = m_[p] * waveSpeed(p) * waveSpeed(p);
+            const std::size_t base = p * stride;
+            for (std::size_t k = 0; k < list_.count[p]; ++k)
+                stiffness[offset + list_.node[base + k]] += mc2 * list_.gradient[base + k].squaredNorm();
+        });
+    auto massOf = [&](std::size_t j) { return multi_ ? bodyMass_[j / nodes][j % nodes] : (*nodeMass_)[j]; };
+    auto number = [&](std::size_t j) {
+        const double m = massOf(j);
+        return mapped && m >= massCutoff_ ? 0.5 * dt * std::sqrt(stiffness[j] / m) : 0.0;
+    };
+    indicator.value = GlobalReduce::max(fields * nodes, number);
+    // The largest number over the nodes particle p reaches (N_Ip > 0).
+    auto reached = [&](std::size_t p) {
+        if (!mapped) return 0.0;
+        const std::size_t offset = multi_ ? std::size_t((*region_)[p]) * nodes : 0;
+        const std::size_t base = p * stride;
+        double largest = 0;
+        for (std::size_t k = 0; k < list_.count[p]; ++k)
+            if (list_.weight[base + k] > 0)
+                largest = std::max(largest, number(offset + list_.node[base + k]));
+        return largest;
+    };
+    indicator.count = std::size_t(
+        GlobalReduce::sum<double>(n, [&](std::size_t p) { return reached(p) > 1.0 ? 1.0 : 0.0; }));
+    double worst = std::numeric_limits<double>::infinity();
+    if (indicator.value > 0)
+        for (std::size_t p = 0; p < n; ++p)
+            if (reached(p) >= indicator.value) worst = std::min(worst, double(particles_->globalId()[p]));
+    worst = globalMin(worst);
+    if (std::isfinite(worst)) indicator.worst = std::int64_t(worst);
+    return {indicator};
 }
 
 template <int Dim>

@@ -49,6 +49,15 @@
 // and the remedies (or, with `outsideGrid remove;`, is removed with the mass lost logged); a
 // particle whose grid nodes carry no mass of any other particle (separated from its body by more
 // than the support: numerical fracture, the extension instability of note 6.2) stops the run.
+//
+// The health check (functionObjects/Health.hpp) sees the CFL vote's particle, the energy budget's
+// transfer loss D and the grid conditions' and damping's work W (MpmSolver.cpp), and the
+// small-mass indicator. It is not given the grid as its domain (RunContext::domain): the
+// solver's own check in preStep stops a particle outside the grid before it is mapped, naming it,
+// its body, the grid's span and the remedies (outsideGrid remove among them), and it runs after
+// the function objects, so that one that ends the run at a boundary (damBarrier's planeCrossing at
+// the open top y = 8) ends it cleanly; the health check's end-of-step test would stop it first.
+// A health { domainMin; domainMax; } box still applies.
 #include "functionObjects/CsvFile.hpp"
 #include "grid/CartesianGrid.hpp"
 #include "grid/gridBoundaryConditions/GridBoundaryCondition.hpp"
@@ -82,6 +91,10 @@ public:
     ParticleSetBase& particles() override { return *particles_; }
     std::optional<double> internalEnergy() const override;
     std::optional<double> potentialEnergy() const override;
+    // The energy budget's transfer and boundary terms, summed over the steps (MpmSolver.cpp, step()).
+    std::optional<double> schemeDissipation() const override { return dissipated_; }
+    std::optional<double> externalWork() const override { return externalWork_; }
+    std::vector<HealthIndicator> healthIndicators() const override;
     std::vector<ExtraFile> extraOutput() const override;
     std::vector<std::string> summary(double loopSeconds) const override;
 
@@ -110,6 +123,9 @@ private:
     // sees a piece of one particle only. Union-find over the nodes (pieceParent_), rank-local.
     void checkTorn();
     void checkFinite(const char* phaseName) const;
+    // The p-wave speed of particle i's material (an equation of state's: the particle's own).
+    double waveSpeed(std::size_t i) const;
+    std::vector<double> materialWaveSpeed_;  // per material (0 for an equation of state's)
     // multiField: the per-body node fields, sized once; the contact correction of the velocity
     // (and acceleration, with the pair forces recorded, after the grid solve).
     void allocateBodyFields();
@@ -177,6 +193,18 @@ private:
     std::vector<Vector<Dim>> nodeX_;     // the node positions (APIC's x_I - x_p), made once
     std::vector<std::size_t> pieceParent_, pieceSize_, pieceRoot_;  // checkTorn: union-find, sizes, roots
     std::int64_t particleSteps_ = 0;
+
+    // The energy budget (step()): the kinetic energy the transfers lose, and the work of the grid
+    // conditions and the damping, summed since construction; the grid kinetic energies of the step.
+    double particleKinetic() const;
+    double gridKinetic() const;  // sum 1/2 m_I |v_I|^2 of the velocity the particles will read
+    double dissipated_ = 0, externalWork_ = 0;
+    double gridKineticStart_ = 0, gridKineticSolved_ = 0;
+    // v* after the solve and v^c after the contact correction, per node field (W's test of which
+    // components a condition set), kept only with grid conditions or damping.
+    std::vector<std::vector<Vector<Dim>>> solvedVelocity_, contactedVelocity_;
+    // The largest c + |v| of the last vote (the small-mass indicator's Courant number).
+    double lastSpeed_ = 0;
 
     // multiField (empty under singleField): per body b the node arrays, b = the region id.
     bool multi_ = false;
