@@ -163,8 +163,9 @@ void Health::checkFinite() const {
         const double* v = static_cast<const double*>(f->data());
         const std::size_t m = n * std::size_t(f->components());
         if (m < 65536) {  // LocalReduce's blocks cost more than such a stream
-            std::size_t nonFinite = 0;
-            for (std::size_t k = 0; k < m; ++k) nonFinite += std::isfinite(v[k]) ? 0 : 1;
+            // x - x is 0 for a finite x and NaN else: an OR of comparisons, which vectorises.
+            unsigned nonFinite = 0;
+            for (std::size_t k = 0; k < m; ++k) nonFinite |= unsigned(!(v[k] - v[k] == 0.0));
             local += double(nonFinite);
         } else {
             local += LocalReduce::sum<double>(m, [v](std::size_t k) { return std::isfinite(v[k]) ? 0.0 : 1.0; });
@@ -248,9 +249,10 @@ void Health::checkDomain() {
     const int dim = position.components();
     const std::size_t n = context().ownedParticles();
     const DomainBox& box = *domain_;
+    const double* xs = static_cast<const double*>(position.data());
     auto outside = [&](std::size_t i) {
         for (int d = 0; d < dim; ++d) {
-            const double x = position.component(i, d);
+            const double x = xs[i * std::size_t(dim) + std::size_t(d)];
             if (!(x >= box.min[d] && x <= box.max[d])) return true;
         }
         return false;
