@@ -714,10 +714,13 @@ void FpmSolver<Dim>::initialiseFields() {
     const bool hadStress = owner_->template findField<SymmTensor<Dim>>("deviatoricStress") != nullptr;
     p_ = &owner_->scalarField("pressure");
     V_ = &owner_->scalarField("volume");
-    S_ = &owner_->symmTensorField("deviatoricStress");
+    // The deviator only where something evolves or reads it (leave out what a scene does not
+    // need): the shear part, the rotation part (which turns a given stress), an initial stress; a
+    // state that carries one keeps it.
+    if (shear_ || rotation_ || hasInitialStress_ || hadStress) S_ = &owner_->symmTensorField("deviatoricStress");
     if (!hadVolume)
         for (std::size_t i = 0; i < n; ++i) (*V_)[i] = m[i] / rho_[i];
-    if (fresh || !hadStress)
+    if (S_ && (fresh || !hadStress))
         for (std::size_t i = 0; i < n; ++i) (*S_)[i] = initialStressAt(x_[i]);
     if (prescribed_ && fresh)
         for (std::size_t i = 0; i < n; ++i) v_[i] = prescribedVelocity(x_[i]);
@@ -940,7 +943,7 @@ void FpmSolver<Dim>::step(double dt) {
     checkState(
         "rotation", n,
         [&](std::size_t i) {
-            const auto& s = (*S_)[i];
+            const auto s = stressOf(i);
             for (double c : s.c)
                 if (!std::isfinite(c)) return true;
             return !x_[i].allFinite() || !std::isfinite((*V_)[i]) || !v_[i].allFinite() ||
@@ -953,10 +956,9 @@ void FpmSolver<Dim>::step(double dt) {
         });
     if (checkPressure_ || stressBound_ > 0) {
         const std::vector<double>& p = *p_;
-        const std::vector<SymmTensor<Dim>>& S = *S_;
         const auto largest = [&](std::size_t i) {
             double m = 0;
-            for (double c : S[i].c) m = std::max(m, std::abs(c));
+            for (double c : stressOf(i).c) m = std::max(m, std::abs(c));
             return m;
         };
         checkState(
@@ -1097,7 +1099,10 @@ void FpmSolver<Dim>::applyFreeSurface(std::optional<fpm::Subsystem> stage) {
     const auto& flag = surface_->surface();
     const auto& normal = surface_->normal();
     std::vector<double>& p = *p_;
-    std::vector<SymmTensor<Dim>>& S = *S_;
+    // Without a deviator (the Euler part alone) the conditions act on a zero one, per particle.
+    std::vector<SymmTensor<Dim>> none;
+    if (!S_) none.resize(x_.size());
+    std::vector<SymmTensor<Dim>>& S = S_ ? *S_ : none;
     const bool projectStress = shear_ && surfaceTraction_;
     const bool eulerKick = characteristicSurface_ && stage == fpm::Subsystem::euler;
     const bool shearKick = characteristicSurface_ && stage == fpm::Subsystem::shear;
@@ -1311,14 +1316,14 @@ void FpmSolver<Dim>::readFlowReference() {
         start.rho = rho_[0];
         start.p = (*p_)[0];
         start.e = e_ ? (*e_)[0] : 0.0;
-        start.S = (*S_)[0];
+        start.S = stressOf(0);
     }
     const std::vector<std::int64_t>* material = owner_->template findField<std::int64_t>("material");
     for (std::size_t i = 0; i < n; ++i) {
         double spread = std::abs(rho_[i] - start.rho) + std::abs((*p_)[i] - start.p) +
                         std::abs((e_ ? (*e_)[i] : 0.0) - start.e);
         for (int k = 0; k < SymmTensor<Dim>::size; ++k)
-            spread += std::abs((*S_)[i].c[std::size_t(k)] - start.S.c[std::size_t(k)]);
+            spread += std::abs(stressOf(i).c[std::size_t(k)] - start.S.c[std::size_t(k)]);
         if (spread > 1e-12 * (1 + std::abs(start.rho) + std::abs(start.p) + std::abs(start.e)) ||
             (material && (*material)[i] != (*material)[0]))
             throw dict.error("type",
@@ -1363,7 +1368,7 @@ void FpmSolver<Dim>::measureFlowError(double t) {
     a.S = GlobalReduce::max(n, [&](std::size_t i) {
         double e = 0;
         for (int k = 0; k < SymmTensor<Dim>::size; ++k)
-            e = std::max(e, std::abs((*S_)[i].c[std::size_t(k)] - ex.S.c[std::size_t(k)]));
+            e = std::max(e, std::abs(stressOf(i).c[std::size_t(k)] - ex.S.c[std::size_t(k)]));
         return e;
     });
     double sScale = 0;

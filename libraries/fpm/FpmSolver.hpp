@@ -188,7 +188,8 @@ private:
     std::vector<double>& rho_;
     std::vector<double>* p_ = nullptr;
     std::vector<double>* V_ = nullptr;
-    std::vector<SymmTensor<Dim>>* S_ = nullptr;
+    std::vector<SymmTensor<Dim>>* S_ = nullptr;  // null where no part needs a deviator
+    SymmTensor<Dim> stressOf(std::size_t i) const { return S_ ? (*S_)[i] : SymmTensor<Dim>{}; }
 
     NeighbourSearch<Dim> search_;
     NeighbourList rows_;

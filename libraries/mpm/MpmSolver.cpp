@@ -686,6 +686,12 @@ void MpmSolver<Dim>::updateStress(double dt, bool advanceState) {
             (*F_)[p] = (Tensor<Dim>::Identity() + dt * L) * (*F_)[p];
         }
         const Tensor<3> F3 = embed<Dim>((*F_)[p], 1.0);
+        // An inverted particle (J <= 0) keeps its last stress: the state check stops the run on
+        // its J, and the state written for diagnosis holds no NaN of a law evaluated out of range.
+        if (const double Jnow = F3.determinant(); !(Jnow > 0)) {
+            (*J_)[p] = Jnow;
+            return;
+        }
         if (ul_->handles((*material_)[p])) {
             // Equation of state + strength: p and tau advanced with L over the step from the
             // J of the previous step (UpdatedLagrangianStress.hpp); W = rho0 e.
