@@ -30,14 +30,7 @@
 #   particles at most (3 asserted; 2 at t = 0.05, 1 at 0.15);
 # - the health check's cost is reported (measured by bench/health, not asserted: a timed test fails
 #   on a loaded machine).
-set -euo pipefail
-BUILD="$1"
-SOURCE="$2"
-export PATH="$BUILD/bin:$PATH"
-export MFDYN_LIBRARY_PATH="$BUILD/testLibraries"
-WORK="$(mktemp -d "${TMPDIR:-/tmp}/mfdyn-health-sph.XXXXXX")"
-trap 'rm -rf "$WORK"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
+. "$(dirname "$0")/common.sh"
 
 base="$WORK/base"
 mkdir -p "$base"
@@ -57,37 +50,23 @@ faultCase() {
         # the health check can see the collapse.
         echo "integrator predictorCorrector;" >> "$c/constant/sphProperties"
     fi
-    sed -i '/^functions/,$d' "$c/system/controlDict"
-    cat >> "$c/system/controlDict" << EOF
-libs ("libplantFault.so");
-functions
-{
-    plant  { type plantFault; time 0.005; particle 3; field $2; component $3; value "$4"; }
-    health { type health; domainMin (-1); domainMax (2); }
+    plantFault "$c" 0.005 3 "$2" "$3" "$4" "domainMin (-1); domainMax (2);"
+    runFault impactSph "$c" "$1" 3 "$2" "$3" "$4"
 }
-EOF
-    status=0
-    impactSph -case "$c" > "$c/log.impactSph" 2>&1 || status=$?
-    log="$c/log.impactSph"
-    grep -q "plantFault: $2 component $3 of particle 3 set to $4" "$log" || fail "$1: the fault was not planted: $(tail -n 5 "$log")"
-}
-expect() { grep -q -- "$2" "$log" || fail "$1: the log does not name '$2': $(grep -m1 -A3 "Error" "$log" || tail -n 5 "$log")"; }
 
 faultCase nan velocity 0 nan
-[ "$status" = 1 ] || fail "nan: exit status $status, not 1"
-for word in "health check" "particle 3 " "velocity = nan" "Remedy" "Wrote the failing state to"; do expect nan "$word"; done
-written=$(sed -n 's/.*Wrote the failing state to \([^ ]*\)\/.*/\1/p' "$log")
-[ -f "$WORK/nan/$written/particles.vtp" ] || fail "nan: the failing state $written/ was not written"
+expectStateWritten nan "$WORK/nan"
+expect nan "health check" "particle 3 " "velocity = nan" "Remedy"
 echo "nan: stopped by the health check at $written: $(grep -m1 -o 'non-finite values: particle 3 at [^;]*has [^(]*' "$log")"
 
 faultCase speed velocity 0 1e8 adjust
 [ "$status" = 1 ] || fail "speed: exit status $status, not 1"
-for word in "health check" "collapsed" "the limit: Courant, particle 3 " "Remedy"; do expect speed "$word"; done
+expect speed "health check" "collapsed" "the limit: Courant, particle 3 " "Remedy"
 echo "speed: $(grep -m1 -o 'the stable time step collapsed[^;]*; the limit: [^.]*' "$log")"
 
 faultCase outside position 0 5
 [ "$status" = 1 ] || fail "outside: exit status $status, not 1"
-for word in "health check" "particle 3 at (5)" "left the domain" "Remedy"; do expect outside "$word"; done
+expect outside "health check" "particle 3 at (5)" "left the domain" "Remedy"
 echo "outside: $(grep -m1 -o 'particle 3 at (5)[^;]*' "$log")"
 
 # budgetRun <name> <deltaT>: the healthy tube to t = 0.2, health.csv every 0.05; prints the last

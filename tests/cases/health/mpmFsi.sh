@@ -19,14 +19,7 @@
 # - the health check's cost: measured 5 to 8% of this small run (632 particles, 0.2 ms a step), nearly
 #   all of it Health::check's pass over every field every step (checkFinite, checkDomain); asserted
 #   below 10% here (the figure is the health check's, not the solver's hooks').
-set -euo pipefail
-BUILD="$1"
-SOURCE="$2"
-export PATH="$BUILD/bin:$PATH"
-export MFDYN_LIBRARY_PATH="$BUILD/testLibraries"
-WORK="$(mktemp -d "${TMPDIR:-/tmp}/mfdyn-health-mpm.XXXXXX")"
-trap 'rm -rf "$WORK"' EXIT
-fail() { echo "FAIL: $*" >&2; exit 1; }
+. "$(dirname "$0")/common.sh"
 
 base="$WORK/base"
 cp -r "$SOURCE/tutorials/mpmFsi/twoDisks" "$base"
@@ -43,42 +36,28 @@ faultCase() {
     [ "${5:-}" = adjust ] && sed -i 's/^adjustTimeStep .*/adjustTimeStep  yes;/' "$c/system/controlDict"
     [ "${5:-}" = box ] && box="domainMin (0 0); domainMax (1 1);"
     # the tutorial's functions replaced: the plant, then the health check that must see it
-    sed -i '/^functions/,$d' "$c/system/controlDict"
-    cat >> "$c/system/controlDict" << EOF
-libs ("libplantFault.so");
-functions
-{
-    plant  { type plantFault; time 0.01; particle 3; field $2; component $3; value "$4"; }
-    health { type health; $box }
+    plantFault "$c" 0.01 3 "$2" "$3" "$4" "$box"
+    runFault mpmFsi "$c" "$1" 3 "$2" "$3" "$4"
 }
-EOF
-    status=0
-    mpmFsi -case "$c" > "$c/log.mpmFsi" 2>&1 || status=$?
-    log="$c/log.mpmFsi"
-    grep -q "plantFault: $2 component $3 of particle 3 set to $4" "$log" || fail "$1: the fault was not planted: $(tail -n 5 "$log")"
-}
-expect() { grep -q -- "$2" "$log" || fail "$1: the log does not name '$2': $(grep -m1 -A3 "Error" "$log" || tail -n 5 "$log")"; }
 
 faultCase nan velocity 0 nan
-[ "$status" = 1 ] || fail "nan: exit status $status, not 1"
-for word in "health check" "particle 3 " "velocity_x = nan" "Remedy" "Wrote the failing state to"; do expect nan "$word"; done
-written=$(sed -n 's/.*Wrote the failing state to \([^ ]*\)\/.*/\1/p' "$log")
-[ -f "$WORK/nan/$written/particles.vtp" ] || fail "nan: the failing state $written/ was not written"
+expectStateWritten nan "$WORK/nan"
+expect nan "health check" "particle 3 " "velocity_x = nan" "Remedy"
 echo "nan: stopped at $written: $(grep -m1 -o "health check.*particle 3 [^(]*" "$log")"
 
 faultCase speed velocity 0 1e8 adjust
 [ "$status" = 1 ] || fail "speed: exit status $status, not 1"
-for word in "health check" "collapsed" "particle 3 " "Remedy"; do expect speed "$word"; done
+expect speed "health check" "collapsed" "particle 3 " "Remedy"
 echo "speed: $(grep -m1 -o 'the stable time step collapsed[^;]*; the limit: [^.]*' "$log")"
 
 faultCase outside position 0 5
 [ "$status" = 1 ] || fail "outside: exit status $status, not 1"
-for word in "phase preStep" "particle 3 (body lower) at (5 " "has left the grid" "Remedies"; do expect outside "$word"; done
+expect outside "phase preStep" "particle 3 (body lower) at (5 " "has left the grid" "Remedies"
 echo "outside: $(grep -m1 -o 'phase preStep.*has left the grid' "$log")"
 
 faultCase box position 0 5 box
 [ "$status" = 1 ] || fail "box: exit status $status, not 1"
-for word in "health check" "particle 3 at (5 " "left the domain" "Remedy" "Wrote the failing state to"; do expect box "$word"; done
+expect box "health check" "particle 3 at (5 " "left the domain" "Remedy" "Wrote the failing state to"
 echo "box: $(grep -m1 -o 'health check.*left the domain [^;]*' "$log")"
 
 # The healthy run to t = 3, the budget every 100 steps.

@@ -14,6 +14,7 @@
 # damped mode against its RK2 update): below 1% for lambda dt < 0.43, which bounds the oscillating
 # plate, whose start excites short waves that JST removes in its first milliseconds.
 source "$(dirname "$0")/../tlSph/common.sh"
+source "$(dirname "$0")/faults.sh"
 export MFDYN_LIBRARY_PATH="$BUILD/testLibraries"
 # health <case> <entries>: a health entry of its own in the case's functions (replacing the default).
 health() {
@@ -92,15 +93,7 @@ plant() {  # plant <name> <field> <component> <value>
     local f="$WORK/$1"
     copyTutorial spinningCube "$f"
     particleGen -case "$f" > "$f/log.particleGen" 2>&1 || fail "particleGen"
-    sed -i '/^functions/,$d' "$f/system/controlDict"
-    cat >> "$f/system/controlDict" << EOF
-libs ("libplantFault.so");
-functions
-{
-    plant  { type plantFault; time 0.01; particle 43; field $2; component $3; value "$4"; }
-    health { type health; domainMin (-2 -2 -2); domainMax (3 3 3); }
-}
-EOF
+    plantFault "$f" 0.01 43 "$2" "$3" "$4" "domainMin (-2 -2 -2); domainMax (3 3 3);"
     if tlSph -case "$f" > "$f/log.tlSph" 2>&1; then fail "$1: the run did not stop"; else status=$?; fi
     [ "$status" = 1 ] || fail "$1: exit status $status, not 1"
 }
