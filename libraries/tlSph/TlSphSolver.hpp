@@ -82,7 +82,8 @@ public:
     // The energy budget's two other terms, each since construction (TlSphSolver.cpp, the energy
     // budget): the energy the stabilisation and the projections removed from K + U, and the work
     // of the boundary conditions and body forces.
-    std::optional<double> schemeDissipation() const override { return schemeDissipation_; }
+    // The stabilisation's and the plastic flow's (TlSphSolver.cpp, the energy budget).
+    std::optional<double> schemeDissipation() const override { return schemeDissipation_ + plasticDissipation_; }
     std::optional<double> externalWork() const override { return externalWork_; }
     // hourglass, neighbourDeficiency, compression (TlSphSolver.cpp; TlSphHealth.hpp).
     std::vector<HealthIndicator> healthIndicators() const override;
@@ -166,6 +167,8 @@ private:
     // and per material how D(J) changes its stored energy (1: at dU/dJ, the law's pressure; 0: the
     // law's energy does not read the evolved J; -1: neither, D(J)'s work left out of the budget).
     double schemeDissipation_ = 0, stageDissipation_ = 0;
+    double plasticDissipation_ = 0;    // summed returns' loss W_trial - W (J)
+    std::vector<double> plasticLoss_;  // per particle, the latest return's loss
     std::vector<double> stageWork_;
     std::vector<int> jacobianWork_;
     // neighbourDeficiency is of the reference configuration: computed at the first call, kept.

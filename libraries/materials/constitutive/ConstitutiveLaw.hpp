@@ -86,6 +86,9 @@ public:
         double* energyDensity = nullptr;        // out, optional: W per reference volume [J/m^3]
         SymmTensor<3>* plasticState = nullptr;  // in/out when usesPlasticState(): Cp^-1 (start: I)
         double* plasticStrain = nullptr;        // in/out when usesPlasticState(): equivalent eps_p
+        // out, optional, with usesPlasticState(): what the return to the yield surface removed from W
+        // per reference volume, the trial state's W less the returned one's [J/m^3] (0 when elastic)
+        double* plasticDissipation = nullptr;
     };
 
     // P (and pressure, energy when non-null) for every particle of the block. With updateState

@@ -89,11 +89,15 @@ void J2Plasticity::stress(const Fields& f, bool updateState) const {
         const double norm = s.norm();
         const double epsP = f.plasticStrain[i];
         const double excess = norm - sqrtTwoThirds * (yield0_ + hardening_ * epsP);
-        double trB = trTrial;
+        double trB = trTrial, dissipation = 0.0;
         if (excess > 0.0) {
             const double muBar = mu_ * trTrial / 3.0;
             const double dGamma = excess / (2.0 * muBar * (1.0 + hardening_ / (3.0 * muBar)));
             s *= 1.0 - 2.0 * muBar * dGamma / norm;
+            // The flow's dissipation, the returned Kirchhoff deviator times the plastic increment
+            // (Simo 1992, CMAME 99, the J2 return's D = |s| dgamma); W_trial - W exceeds it by
+            // mu dgamma^2, which is not small where one step carries much plastic strain.
+            dissipation = (norm - 2.0 * muBar * dGamma) * dGamma;
             const Tensor<3> d = s / mu_;
             const double a = isochoricTrace(d, trTrial / 3.0);
             trB = 3.0 * a;
@@ -110,6 +114,7 @@ void J2Plasticity::stress(const Fields& f, bool updateState) const {
         if (f.pressure) f.pressure[i] = p;
         if (f.energyDensity)
             f.energyDensity[i] = 0.5 * mu_ * (trB - 3.0) + 0.5 * kappa_ * (J - 1.0) * (J - 1.0);
+        if (f.plasticDissipation) f.plasticDissipation[i] = dissipation;
     }
 }
 

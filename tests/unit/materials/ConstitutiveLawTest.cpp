@@ -318,6 +318,32 @@ TEST(ConstitutiveJ2Plasticity, LinearHardening) {
     EXPECT_NEAR(p.epsP, std::log(1.05) - elastic, 1.2 * elastic * p.epsP);
 }
 
+// The return's dissipation (plasticDissipation, the health check's budget in tlSph): the returned
+// Kirchhoff deviator times the plastic increment, |s| dgamma, which with |s| = sqrt(2/3) sigma_Y on
+// the yield surface and d eps_p = sqrt(2/3) dgamma is sigma_Y d eps_p exactly (an isochoric
+// stretch: J = 1, Kirchhoff = Cauchy); 0 in an elastic step.
+TEST(ConstitutiveJ2Plasticity, PlasticDissipationIsTheYieldStressTimesThePlasticIncrement) {
+    const auto law = inMaterial(metal, "type j2Plasticity;");
+    Particle p(Tensor<3>::Identity());
+    int plasticSteps = 0;
+    for (int step = 1; step <= 100; ++step) {
+        const double before = p.epsP;
+        p.setF(isochoricStretch(1.0 + 2e-4 * step));
+        ConstitutiveLaw::Fields f = p.fields();
+        double dissipation = -1;
+        f.plasticDissipation = &dissipation;
+        law->stress(f, true);
+        const double increment = p.epsP - before;
+        if (increment == 0.0) {
+            EXPECT_EQ(dissipation, 0.0) << step;
+            continue;
+        }
+        ++plasticSteps;
+        EXPECT_NEAR(dissipation, metalYield * increment, 1e-9 * metalYield * increment) << step;
+    }
+    EXPECT_GT(plasticSteps, 80);
+}
+
 TEST(ConstitutiveJ2Plasticity, StagesLeaveTheStateUntouched) {
     const auto law = inMaterial(metal, "type j2Plasticity; hardeningModulus 2e9;");
     Particle p(Tensor<3>::Identity());
