@@ -40,7 +40,8 @@
 //                          (PIC's averaging loses, >= 0 by Jensen; FLIP's noise either sign; APIC's
 //                          affine velocity is outside K_p, so its share shows here), plus under
 //                          multiField the contact correction's K* - K^c (the nodes of two bodies
-//                          meeting perfectly plastically, and friction)
+//                          meeting perfectly plastically, and friction), plus the plastic flow's
+//                          dissipation, V0 |s| dgamma at each return (the law's plasticDissipation)
 //   W (externalWork)       the work of the grid conditions and of the damping on the nodes, per
 //                          node I and component c: where a condition set it (v+ != v^c, the
 //                          velocity after the contact, v* without), its whole change of K less f's
@@ -666,6 +667,7 @@ void MpmSolver<Dim>::gridToParticles(double dt) {
 
 template <int Dim>
 void MpmSolver<Dim>::updateStress(double dt, bool advanceState) {
+    if (advanceState && plastic_) plasticLoss_.assign(x_.size(), 0.0);
     auto timed = phase("stress");
     const std::size_t stride = list_.stride;
     const bool move = dt != 0.0;
@@ -715,6 +717,7 @@ void MpmSolver<Dim>::updateStress(double dt, bool advanceState) {
                                                     plasticOutOfPlane_ ? (*plasticOutOfPlane_)[p] : 1.0));
             epsP = (*plasticStrain_)[p];
             f.plasticState = &cp, f.plasticStrain = &epsP;
+            if (advanceState) f.plasticDissipation = &plasticLoss_[p];
         }
         law.stress(f, advanceState);
         if (advanceState && law.usesPlasticState()) {
@@ -730,6 +733,9 @@ void MpmSolver<Dim>::updateStress(double dt, bool advanceState) {
         (*J_)[p] = J;
         (*W_)[p] = w;
     });
+    // The plastic flow's dissipation (the budget's D; the law's |s| dgamma per reference volume).
+    if (advanceState && plastic_)
+        dissipated_ += GlobalReduce::sum<double>(x_.size(), [&](std::size_t p) { return m_[p] / rho0_[p] * plasticLoss_[p]; });
 }
 
 template <int Dim>

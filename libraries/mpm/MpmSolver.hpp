@@ -199,6 +199,7 @@ private:
     double particleKinetic() const;
     double gridKinetic() const;  // sum 1/2 m_I |v_I|^2 of the velocity the particles will read
     double dissipated_ = 0, externalWork_ = 0;
+    std::vector<double> plasticLoss_;  // per particle, the latest return's dissipation density
     double gridKineticStart_ = 0, gridKineticSolved_ = 0;
     // v* after the solve and v^c after the contact correction, per node field (W's test of which
     // components a condition set), kept only with grid conditions or damping.
