@@ -41,3 +41,19 @@ expectStateWritten() {
     written=$(sed -n 's/.*Wrote the failing state to \([^ ]*\)\/.*/\1/p' "$log" | head -n 1)
     [ -f "$2/$written/particles.vtp" ] || fail "$1: the failing state $written/ was not written"
 }
+
+# The three planted faults' common assertions, on the case of faultCase <name> (the script's own
+# runner, which sets $status and $log) for particle 3:
+# expectNaNStop <component text>: the health check stops the run at the NaN, naming the particle and
+# the component, with a remedy, and writes the failing state.
+expectNaNStop() {
+    expectStateWritten nan "$WORK/nan"
+    expect nan "health check" "particle 3 " "$1" "Remedy"
+    echo "nan: stopped at $written: $(grep -m1 -o "health check.*particle 3 [^(]*" "$log")"
+}
+# expectCollapse: a speed of 1e8 collapses the stable step; the health check names the particle.
+expectCollapse() {
+    [ "$status" = 1 ] || fail "speed: exit status $status, not 1"
+    expect speed "health check" "collapsed" "particle 3 " "Remedy"
+    echo "speed: $(grep -m1 -o 'the stable time step collapsed[^;]*; the limit: [^.]*' "$log")"
+}

@@ -4,6 +4,7 @@
 // has 1 + 3 + 3 = 7, an edge's middle 1 + 4 + 5 = 10, a face's centre 1 + 5 + 8 = 14, the centre
 // 1 + 6 + 12 = 19: the fewest is 7, the 8 corners fall below the fit's minimum 2(d + 1) = 8 (the
 // run goes on with fitFallback shepard), and the worst particle is the corner of lowest id, 0.
+#include "../CsvTestTools.hpp"
 #include "core/Application.hpp"
 #include "fpm/FpmSolver.hpp"
 #include "particles/ParticleSet.hpp"
@@ -30,15 +31,7 @@ void writeFile(const fs::path& file, const std::string& text) {
 }
 
 std::map<std::string, double> lastHealthRow(const fs::path& dir) {
-    std::ifstream in(dir / "postProcessing/health/0/health.csv");
-    std::string header, row, line;
-    while (std::getline(in, line))
-        if (!line.empty() && line[0] != '#') (header.empty() ? header : row) = line;
-    std::map<std::string, double> values;
-    std::stringstream h(header), r(row);
-    std::string name, value;
-    while (std::getline(h, name, ',') && std::getline(r, value, ',')) values[name] = std::stod(value);
-    return values;
+    return mfdyn::testing::lastCsvRow(dir / "postProcessing/health/0/health.csv");
 }
 
 TEST(FpmHealth, NeighbourDeficiencyOnALatticeByHand) {

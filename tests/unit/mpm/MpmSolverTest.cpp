@@ -1,6 +1,7 @@
 // mpmFsi end to end on small hand-made cases (doc/methods/mpm.md section 5): the conservation of
 // the particle-to-grid map (U2), rigid translation (U4) and rigid rotation for every shape
 // function and scheme, and the bad input that must be an InputError at its file and line.
+#include "../CsvTestTools.hpp"
 #include "core/Application.hpp"
 #include "grid/VtiWriter.hpp"
 #include "mpm/MpmSolver.hpp"
@@ -377,15 +378,7 @@ TEST(MpmInput, AMaterialTheMethodCannotUseIsRefused) {
 // none without forces (D = 0, K = K0). With every node fixed (v+ = 0: W = -m u^2 / 2) PIC stops
 // both (K = 0, D = m u^2 / 2). K + D - W = K0 in each.
 std::map<std::string, double> healthRow(const fs::path& dir) {
-    std::ifstream in(dir / "postProcessing/health/0/health.csv");
-    std::string header, row, line;
-    while (std::getline(in, line))
-        if (!line.empty() && line[0] != '#') (header.empty() ? header : row) = line;
-    std::map<std::string, double> values;
-    std::stringstream h(header), r(row);
-    std::string name, value;
-    while (std::getline(h, name, ',') && std::getline(r, value, ',')) values[name] = std::stod(value);
-    return values;
+    return mfdyn::testing::lastCsvRow(dir / "postProcessing/health/0/health.csv");
 }
 
 TEST(MpmHealth, TransfersLossAndGridConditionsWorkByHand) {
