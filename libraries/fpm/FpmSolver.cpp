@@ -1099,10 +1099,10 @@ void FpmSolver<Dim>::applyFreeSurface(std::optional<fpm::Subsystem> stage) {
     const auto& flag = surface_->surface();
     const auto& normal = surface_->normal();
     std::vector<double>& p = *p_;
-    // Without a deviator (the Euler part alone) the conditions act on a zero one, per particle.
-    std::vector<SymmTensor<Dim>> none;
-    if (!S_) none.resize(x_.size());
-    std::vector<SymmTensor<Dim>>& S = S_ ? *S_ : none;
+    // Without a deviator (the Euler part alone) the conditions act on a zero one, per particle (a
+    // scratch reset each call: a condition may write into it; its capacity is kept between steps).
+    if (!S_) noStress_.assign(x_.size(), SymmTensor<Dim>{});
+    std::vector<SymmTensor<Dim>>& S = S_ ? *S_ : noStress_;
     const bool projectStress = shear_ && surfaceTraction_;
     const bool eulerKick = characteristicSurface_ && stage == fpm::Subsystem::euler;
     const bool shearKick = characteristicSurface_ && stage == fpm::Subsystem::shear;

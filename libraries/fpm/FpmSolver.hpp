@@ -190,6 +190,7 @@ private:
     std::vector<double>* V_ = nullptr;
     std::vector<SymmTensor<Dim>>* S_ = nullptr;  // null where no part needs a deviator
     SymmTensor<Dim> stressOf(std::size_t i) const { return S_ ? (*S_)[i] : SymmTensor<Dim>{}; }
+    std::vector<SymmTensor<Dim>> noStress_;  // applyFreeSurface's zero deviator where S_ is null
 
     NeighbourSearch<Dim> search_;
     NeighbourList rows_;

@@ -8,8 +8,8 @@
 # - particle 3 planted at x = 50, outside the health check's domainMin/domainMax (the sphere of
 #   radius 5 in the box -10 to 10), stops the run naming it;
 # - the healthy run's indicators: every particle has at least the fit's minimum of 2(d + 1) = 8
-#   neighbours and a reciprocal condition above minReciprocalCondition (counts 0), and the health
-#   check costs below 3% of the run.
+#   neighbours and a reciprocal condition above minReciprocalCondition (counts 0); the health check's
+#   cost is reported, not asserted (bench/health measures it).
 . "$(dirname "$0")/common.sh"
 
 base="$WORK/base"
@@ -64,5 +64,5 @@ grep "energy imbalance" "$c/log.fpmSolid" | sed 's/^ *//'
 awk -v n="$fewest" 'BEGIN { exit !(n >= 8) }' || fail "fewest neighbours $fewest < 8"
 cost=$(sed -n 's/.*; cost \([0-9.e+-]*\)% of the run.*/\1/p' "$c/log.fpmSolid")
 echo "health cost $cost% of the run"
-awk -v c="$cost" 'BEGIN { exit !(c < 3) }' || fail "the health check costs $cost% of the run"
+[ -n "$cost" ] || fail "no cost in the health summary"
 echo "PASS: health.fpmSolid"
