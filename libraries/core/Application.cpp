@@ -1,5 +1,7 @@
 #include "core/Application.hpp"
 
+#include "core/Communicator.hpp"
+
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "core/LibraryLoader.hpp"
@@ -12,6 +14,7 @@
 #include <cstdlib>
 #include <iostream>
 #include <sstream>
+#include <streambuf>
 
 namespace mfdyn {
 
@@ -134,9 +137,56 @@ void loadToolkitLibraries() {
     }
 }
 
+namespace {
+
+// Ranks other than 0 write nothing to the standard output: the log, progress and summary come
+// from rank 0 (whose figures are global reductions). Errors go to the standard error.
+class NullBuffer : public std::streambuf {
+protected:
+    int overflow(int c) override { return traits_type::not_eof(c); }
+    std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
+};
+
+// Finalises MPI however runApplication leaves (return or exception).
+struct CommunicatorSession {
+    CommunicatorSession(int& argc, char**& argv) {
+        Communicator::initialise(argc, argv);
+        if (Communicator::rank() != 0) {
+            static NullBuffer quiet;
+            std::cout.rdbuf(&quiet);
+        }
+    }
+    ~CommunicatorSession() { Communicator::finalise(); }
+};
+
+// An error ends the process with status 1. On several ranks an error is either collective (every
+// rank threw it together: a bad dictionary, a diagnosis made through a global reduction, which
+// gives every rank the same words) or one rank's own; a rank cannot tell which, so it waits a
+// few seconds for the others at a barrier. All there: rank 0 reports, every rank returns 1. Some
+// missing (they are inside a collective this rank will never join): this rank reports with its
+// rank named and ends the whole job, never a hang.
+int failWith(const std::string& text) {
+    std::cout.flush();
+    if (!Communicator::distributed()) {
+        std::cerr << text << std::endl;
+        return 1;
+    }
+    constexpr double waitForOthers = 3.0;
+    if (Communicator::barrierWithin(waitForOthers)) {
+        if (Communicator::rank() == 0) std::cerr << text << std::endl;
+        return 1;
+    }
+    std::cerr << "\n(" << Communicator::rankName() << ", the other ranks did not stop with it: the job is ended)"
+              << text << std::endl;
+    Communicator::abortAll(1);
+}
+
+}  // namespace
+
 int runApplication(int argc, char** argv, const ApplicationInfo& info,
                    const std::function<int(const Arguments&)>& body) {
     preferPassiveWaitPolicy(argv);
+    CommunicatorSession session(argc, argv);
     try {
         Arguments args = Arguments::parse(argc, argv, info);
         if (args.has("help")) {
@@ -165,20 +215,13 @@ int runApplication(int argc, char** argv, const ApplicationInfo& info,
                              usage(info));
         return body(args);
     } catch (const Error& e) {
-        std::cout.flush();
-        std::cerr << "\nError: " << e.what() << "\n" << std::endl;
-        return 1;
+        return failWith(std::string("\nError: ") + e.what() + "\n");
     } catch (const std::filesystem::filesystem_error& e) {
         // A path the system refuses to look at (a link to itself, no permission) is bad input,
         // not a bug: name the path and the system's reason.
-        std::cout.flush();
-        std::cerr << "\nError: cannot access '" << e.path1().string() << "': " << e.code().message() << "\n"
-                  << std::endl;
-        return 1;
+        return failWith("\nError: cannot access '" + e.path1().string() + "': " + e.code().message() + "\n");
     } catch (const std::exception& e) {
-        std::cout.flush();
-        std::cerr << "\nError (internal): " << e.what() << "\n" << std::endl;
-        return 1;
+        return failWith(std::string("\nError (internal): ") + e.what() + "\n");
     }
 }
 

@@ -9,3 +9,37 @@ int threadCount() {
 }
 
 }  // namespace mfdyn
+
+namespace mfdyn {
+
+double globalMax(double local) {
+    globalReductionCount.fetch_add(1, std::memory_order_relaxed);
+    if (!Communicator::distributed()) return local;
+    std::vector<double> all(std::size_t(Communicator::size()));
+    Communicator::allGather(&local, sizeof local, all.data());
+    return *std::max_element(all.begin(), all.end());
+}
+
+double globalMin(double local) {
+    globalReductionCount.fetch_add(1, std::memory_order_relaxed);
+    if (!Communicator::distributed()) return local;
+    std::vector<double> all(std::size_t(Communicator::size()));
+    Communicator::allGather(&local, sizeof local, all.data());
+    return *std::min_element(all.begin(), all.end());
+}
+
+std::string globalFirstMessage(std::int64_t key, std::string text) {
+    globalReductionCount.fetch_add(1, std::memory_order_relaxed);
+    if (!Communicator::distributed()) return text;
+    std::vector<std::int64_t> keys(std::size_t(Communicator::size()));
+    Communicator::allGather(&key, sizeof key, keys.data());
+    const int winner = int(std::min_element(keys.begin(), keys.end()) - keys.begin());
+    if (keys[std::size_t(winner)] == noMessageKey) return {};
+    std::uint64_t length = text.size();
+    Communicator::broadcast(&length, sizeof length, winner);
+    text.resize(length);
+    Communicator::broadcast(text.data(), length, winner);
+    return text;
+}
+
+}  // namespace mfdyn

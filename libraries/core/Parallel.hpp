@@ -15,6 +15,8 @@
 // Reductions are deterministic for any thread count: the range is cut into fixed blocks
 // (independent of the number of threads), each block is summed in order, and the block sums
 // are added in block order.
+#include "core/Communicator.hpp"
+
 #include <algorithm>
 #include <array>
 #include <atomic>
@@ -22,6 +24,7 @@
 #include <cstdint>
 #include <limits>
 #include <string>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -65,36 +68,34 @@ struct SumArray {
 // behind a rank-local early return it would deadlock; one relaxed increment per reduction.
 inline std::atomic<std::uint64_t> globalReductionCount{0};
 
-// The global hooks: the one place an MPI build changes. On one process they return their
-// argument. `T` for globalSum is anything summable by LocalReduce (double, size_t, SumArray<N>).
-// A struct of doubles whose += also takes a max (an error norm's Linf) is fine: an MPI build
-// reduces T with an MPI_Op made from its +=, so T must be trivially copyable and += commutative.
+// The global hooks, over every rank (core/Communicator.hpp); on one process they return their
+// argument. `T` for globalSum is anything summable by LocalReduce (double, size_t, SumArray<N>,
+// a struct of doubles whose += also takes a max, such as an error norm's Linf): T must be
+// trivially copyable. Every rank gathers every rank's partial and adds them in rank order
+// itself, so all ranks hold the same bits and the result does not depend on MPI's reduction
+// tree (the one order there is; it differs from the serial sum only in where the blocks of
+// LocalReduce end, i.e. in the last bits).
 template <class T>
 T globalSum(const T& local) {
     globalReductionCount.fetch_add(1, std::memory_order_relaxed);
-    return local;
+    if (!Communicator::distributed()) return local;
+    static_assert(std::is_trivially_copyable_v<T>, "globalSum: T must be trivially copyable");
+    std::vector<T> all(std::size_t(Communicator::size()));
+    Communicator::allGather(&local, sizeof(T), all.data());
+    T total{};
+    for (const T& part : all) total += part;
+    return total;
 }
-inline double globalMax(double local) {
-    globalReductionCount.fetch_add(1, std::memory_order_relaxed);
-    return local;
-}
-inline double globalMin(double local) {
-    globalReductionCount.fetch_add(1, std::memory_order_relaxed);
-    return local;
-}
+double globalMax(double local);
+double globalMin(double local);
 // One text for every rank, from the rank with the lowest `key`: each rank passes its candidate
 // (key = e.g. the lowest global id among its bad particles, text = that one's description) or
 // noMessageKey and an empty text when it has none; every rank returns the text of the lowest key
-// (empty when no rank has one). Keys must differ between ranks that offer a text (global ids do).
-// So that an error found on some ranks is thrown with the same words on all. An MPI build
-// replaces the body: MPI_Allreduce with MPI_MINLOC on (key, rank), then MPI_Bcast of the text's
-// length and characters from the winning rank. On one process the candidate is the answer.
+// (empty when no rank has one; equal keys: the lowest rank). So that an error found on some
+// ranks is thrown with the same words on all: the keys are gathered, then the winner's text is
+// broadcast. On one process the candidate is the answer.
 inline constexpr std::int64_t noMessageKey = std::numeric_limits<std::int64_t>::max();
-inline std::string globalFirstMessage(std::int64_t key, std::string text) {
-    globalReductionCount.fetch_add(1, std::memory_order_relaxed);
-    (void)key;
-    return text;
-}
+std::string globalFirstMessage(std::int64_t key, std::string text);
 
 struct LocalReduce {
     static constexpr std::size_t blockSize = 4096;
