@@ -19,6 +19,11 @@ namespace {
 int rank_ = 0;
 int size_ = 1;
 bool initialised_ = false;  // this process called MPI_Init_thread (and must finalise)
+#ifdef MFDYN_WITH_MPI
+// A second communicator over the same ranks for the error path's barrier (barrierWithin): a
+// barrier there can never be matched with a collective of the run that other ranks are inside.
+MPI_Comm errorComm_ = MPI_COMM_NULL;
+#endif
 
 bool launchedByMpirun() {
     for (const char* name : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE"})
@@ -44,6 +49,8 @@ void initialise(int& argc, char**& argv) {
     // Errors come back as codes (check() above turns them into exceptions, which the
     // application's handler ends the job with) instead of the default silent abort.
     MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
+    MPI_Comm_dup(MPI_COMM_WORLD, &errorComm_);
+    MPI_Comm_set_errhandler(errorComm_, MPI_ERRORS_RETURN);
 #else
     (void)argc, (void)argv;
 #endif
@@ -176,11 +183,11 @@ bool barrierWithin(double seconds) {
     if (size_ == 1) return true;
 #ifdef MFDYN_WITH_MPI
     MPI_Request request;
-    if (MPI_Ibarrier(MPI_COMM_WORLD, &request) != MPI_SUCCESS) return false;
+    if (MPI_Ibarrier(errorComm_, &request) != MPI_SUCCESS) return false;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
     while (std::chrono::steady_clock::now() < deadline) {
         int done = 0;
-        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+        if (MPI_Test(&request, &done, MPI_STATUS_IGNORE) != MPI_SUCCESS) return false;
         if (done) return true;
         std::this_thread::sleep_for(std::chrono::milliseconds(5));
     }

@@ -2,6 +2,9 @@
 
 #include <omp.h>
 
+#include <algorithm>
+#include <cstring>
+
 namespace mfdyn {
 
 int threadCount() {
@@ -26,6 +29,26 @@ double globalMin(double local) {
     std::vector<double> all(std::size_t(Communicator::size()));
     Communicator::allGather(&local, sizeof local, all.data());
     return *std::min_element(all.begin(), all.end());
+}
+
+double globalMedian(const std::vector<double>& local) {
+    globalReductionCount.fetch_add(1, std::memory_order_relaxed);
+    std::vector<double> all;
+    if (!Communicator::distributed()) {
+        all = local;
+    } else {
+        const char* bytes = reinterpret_cast<const char*>(local.data());
+        for (const auto& part :
+             Communicator::allGatherVariable(std::vector<char>(bytes, bytes + local.size() * sizeof(double)))) {
+            const std::size_t k = part.size() / sizeof(double);
+            const std::size_t at = all.size();
+            all.resize(at + k);
+            if (k) std::memcpy(all.data() + at, part.data(), part.size());
+        }
+    }
+    if (all.empty()) return 0;
+    std::nth_element(all.begin(), all.begin() + long(all.size() / 2), all.end());
+    return all[all.size() / 2];
 }
 
 std::string globalFirstMessage(std::int64_t key, std::string text) {

@@ -96,6 +96,10 @@ double globalMin(double local);
 // broadcast. On one process the candidate is the answer.
 inline constexpr std::int64_t noMessageKey = std::numeric_limits<std::int64_t>::max();
 std::string globalFirstMessage(std::int64_t key, std::string text);
+// The median (the upper one of an even count) of the values of every rank together: what a
+// setting taken from "the median particle" (a Verlet skin) must be for every rank to agree with
+// a serial run. Gathers every value: for set-up, not for a time loop.
+double globalMedian(const std::vector<double>& local);
 
 struct LocalReduce {
     static constexpr std::size_t blockSize = 4096;

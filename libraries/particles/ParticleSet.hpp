@@ -76,6 +76,11 @@ public:
         return first;
     }
     const std::vector<TensorType>& ghostMap() const { return ghostMap_; }
+    std::size_t appendHalo(std::size_t n, const HaloExchange& exchange) override {
+        const std::size_t first = ParticleSetBase::appendHalo(n, exchange);
+        ghostMap_.insert(ghostMap_.end(), n, TensorType::Identity());
+        return first;
+    }
     void clearGhosts() override {
         ghostMap_.clear();
         ParticleSetBase::clearGhosts();
@@ -83,27 +88,31 @@ public:
     // After the owned values of `field` changed: each ghost's value copied again from its source.
     template <class T>
     void copyToGhosts(std::vector<T>& field) const {
+        refreshHalo(field.data(), sizeof(T));
         const std::size_t owned = ownedCount();
         const auto& source = ghostSource();
-        for (std::size_t g = 0; g < source.size(); ++g) field[owned + g] = field[source[g]];
+        for (std::size_t g = haloCount(); g < source.size(); ++g) field[owned + g] = field[source[g]];
     }
     // Each ghost's value the image of its source's: Q a for a vector, Q T Q^T for a tensor.
     // (Two names: in 1D a vector and a tensor are the same C++ type.)
     void reflectVectorsToGhosts(std::vector<VectorType>& field) const {
+        refreshHalo(field.data(), sizeof(VectorType));
         const std::size_t owned = ownedCount();
         const auto& source = ghostSource();
-        for (std::size_t g = 0; g < source.size(); ++g) field[owned + g] = ghostMap_[g] * field[source[g]];
+        for (std::size_t g = haloCount(); g < source.size(); ++g) field[owned + g] = ghostMap_[g] * field[source[g]];
     }
     void reflectTensorsToGhosts(std::vector<TensorType>& field) const {
+        refreshHalo(field.data(), sizeof(TensorType));
         const std::size_t owned = ownedCount();
         const auto& source = ghostSource();
-        for (std::size_t g = 0; g < source.size(); ++g)
+        for (std::size_t g = haloCount(); g < source.size(); ++g)
             field[owned + g] = ghostMap_[g] * field[source[g]] * ghostMap_[g].transpose();
     }
     void reflectTensorsToGhosts(std::vector<SymmTensorType>& field) const {
+        refreshHalo(field.data(), sizeof(SymmTensorType));
         const std::size_t owned = ownedCount();
         const auto& source = ghostSource();
-        for (std::size_t g = 0; g < source.size(); ++g)
+        for (std::size_t g = haloCount(); g < source.size(); ++g)
             field[owned + g] =
                 SymmTensorType::fromFull(ghostMap_[g] * field[source[g]].full() * ghostMap_[g].transpose());
     }

@@ -38,6 +38,7 @@ std::size_t ParticleSetBase::append(std::size_t n) {
     refuseWithGhosts("append");
     const std::int64_t next = nextGlobalId();
     const std::size_t first = FieldStore::append(n);
+    ++ownedVersion_;
     auto& id = requireField<std::int64_t>("globalId");
     for (std::size_t k = 0; k < n; ++k) id[first + k] = next + std::int64_t(k);
     nextIdFloor_ = next + std::int64_t(n);
@@ -49,6 +50,7 @@ void ParticleSetBase::keep(const std::vector<std::size_t>& indices) {
     // Remember the removed particles' ids as issued: the highest may be among them.
     const std::int64_t next = nextGlobalId();
     FieldStore::keep(indices);
+    ++ownedVersion_;
     nextIdFloor_ = next;
 }
 
@@ -59,25 +61,46 @@ void ParticleSetBase::resize(std::size_t n) {
     if (n < size()) nextIdFloor_ = nextGlobalId();
     refuseWithGhosts("resize");
     FieldStore::resize(n);
+    ++ownedVersion_;
 }
 
 void ParticleSetBase::reorder(const std::vector<std::size_t>& order) {
     refuseWithGhosts("reorder");
     FieldStore::reorder(order);
+    ++ownedVersion_;
 }
 
 void ParticleSetBase::clearGhosts() {
     if (ghostSource_.empty()) return;
     const std::size_t owned = ownedCount();
     ghostSource_.clear();
+    halo_ = nullptr, haloBegin_ = 0, haloCount_ = 0;
     FieldStore::resize(owned);
+}
+
+std::size_t ParticleSetBase::appendHalo(std::size_t n, const HaloExchange& exchange) {
+    if (!ghostSource_.empty())
+        throw Error("appendHalo: the halo comes first among the ghosts; " + std::to_string(ghostSource_.size()) +
+                    " ghosts are there already");
+    const std::size_t first = size();
+    FieldStore::resize(first + n);
+    for (std::size_t k = 0; k < n; ++k) ghostSource_.push_back(first + k);
+    halo_ = &exchange, haloBegin_ = first, haloCount_ = n;
+    return first;
+}
+
+std::size_t ParticleSetBase::appendMigrated(std::size_t n) {
+    refuseWithGhosts("appendMigrated");
+    const std::size_t first = FieldStore::append(n);
+    ++ownedVersion_;
+    return first;
 }
 
 std::size_t ParticleSetBase::appendGhostCopies(const std::vector<std::size_t>& source) {
     const std::size_t owned = ownedCount();
     for (std::size_t s : source)
-        if (s >= owned)
-            throw Error("ghost source " + std::to_string(s) + " is not an owned particle (there are " +
+        if (s >= owned && !(s >= haloBegin_ && s < haloBegin_ + haloCount_))
+            throw Error("ghost source " + std::to_string(s) + " is not an owned or halo particle (there are " +
                         std::to_string(owned) + ")");
     const std::size_t first = size();
     FieldStore::resize(first + source.size());

@@ -12,6 +12,15 @@
 
 namespace mfdyn {
 
+// Refreshes the halo of a field: the values of other ranks' particles that this rank's owned
+// particles read (particles/Decomposition.hpp implements it over MPI). `data` is the field's
+// first element, elementBytes its size; the halo occupies [first, first + count) of the field.
+class HaloExchange {
+public:
+    virtual ~HaloExchange() = default;
+    virtual void refresh(void* data, std::size_t elementBytes, std::size_t first) const = 0;
+};
+
 class ParticleSetBase : public FieldStore {
 public:
     ~ParticleSetBase() override;
@@ -63,6 +72,27 @@ public:
     // Drop every ghost (the fields shrink back to the owned particles).
     virtual void clearGhosts();
 
+    // --- The halo (MPI) -------------------------------------------------------------------
+    // Under domain decomposition the first ghosts are the halo: other ranks' particles that
+    // this rank's owned ones reach, appended by the decomposition (appendHalo: every field
+    // extended, each halo ghost its own source under the identity map, so the ghost loops
+    // below leave it alone) and filled from their owners. copyToGhosts and reflect*ToGhosts
+    // refresh the halo of the field they are given first, so "this phase's neighbours read
+    // field f" is said once, by the call, serially and distributed alike.
+    virtual std::size_t appendHalo(std::size_t n, const HaloExchange& exchange);
+    std::size_t haloCount() const { return haloCount_; }
+    std::size_t haloBegin() const { return haloBegin_; }
+    // Fills the halo part of a field from its owners (nothing without a halo).
+    void refreshHalo(void* data, std::size_t elementBytes) const {
+        if (haloCount_ != 0) halo_->refresh(data, elementBytes, haloBegin_);
+    }
+    // Changes only when the owned particles change (appended, removed, reordered, migrated), not
+    // when ghosts come and go: what a list over owned and halo particles must be rebuilt for.
+    std::uint64_t ownedTopologyVersion() const { return ownedVersion_; }
+    // Particles arrived from another rank: n more, every field zero, no id issued (the sender's
+    // ids come with the fields).
+    std::size_t appendMigrated(std::size_t n);
+
 protected:
     // Append ghosts of `source` (owned indices), every field copied from its source (globalId
     // too: a ghost is its source seen elsewhere); returns the first ghost's index.
@@ -74,7 +104,10 @@ protected:
 private:
     void refuseWithGhosts(const char* operation) const;
 
-    std::int64_t nextIdFloor_ = 0;          // the next id is at least this (see nextGlobalId())
+    std::int64_t nextIdFloor_ = 0;
+    std::uint64_t ownedVersion_ = 0;
+    const HaloExchange* halo_ = nullptr;
+    std::size_t haloBegin_ = 0, haloCount_ = 0;          // the next id is at least this (see nextGlobalId())
     std::vector<std::size_t> ghostSource_;  // per ghost, its owned source
 };
 

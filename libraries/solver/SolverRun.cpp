@@ -1,11 +1,13 @@
 #include "solver/SolverRun.hpp"
 
 #include "core/CaseLock.hpp"
+#include "core/Communicator.hpp"
 #include "core/LibraryLoader.hpp"
 #include "core/Parallel.hpp"
 #include "core/SignalHandler.hpp"
 #include "functionObjects/CsvFile.hpp"
 #include "functionObjects/FunctionObject.hpp"
+#include "particles/Decomposition.hpp"
 #include "particles/PvdIndex.hpp"
 #include "particles/TimeDirectory.hpp"
 #include "particles/VtpReader.hpp"
@@ -80,7 +82,8 @@ SolverRun::SolverRun(const Arguments& args, std::string application)
     : application_(std::move(application)), case_(args.caseDir()), controlDict_(readControlDict(case_)) {
     Log::info(banner(application_, case_.root(), args.commandLine()));
     // Before anything is read that another run could be writing; held until the run ends.
-    lock_ = std::make_unique<CaseLock>(case_.root(), application_);
+    // One lock for the job: rank 0 takes it (the others would find it taken).
+    if (Communicator::rank() == 0) lock_ = std::make_unique<CaseLock>(case_.root(), application_);
     // Libraries first: their models must be selectable before anything is read.
     LibraryLoader::load(controlDict_, case_.root());
     time_ = std::make_unique<Time>(case_.systemFile("controlDict"), controlDict_);
@@ -120,6 +123,31 @@ SolverRun::SolverRun(const Arguments& args, std::string application)
     }
     Log::info("Read " + std::to_string(particles_->size()) + " particles (" +
               std::to_string(particles_->dimension()) + "D) from " + particleFile.string());
+    if (Communicator::distributed()) decompose(particleFile.string());
+}
+
+// Several ranks: each keeps its share of the particles every rank has read. The settings come
+// from system/decomposeParDict, which is optional (recursive coordinate bisection, rebalanced
+// past 1.2 times the mean load).
+void SolverRun::decompose(const std::string& particleFile) {
+    Decomposition::Settings settings;
+    const fs::path dictFile = case_.systemFile("decomposeParDict");
+    std::error_code ec;
+    if (fs::exists(dictFile, ec)) {
+        decomposeParDict_ = Dictionary::read(dictFile);
+        settings.method = decomposeParDict_->getOrDefault<std::string>("method", settings.method);
+        const auto& methods = Partitioner::methods();
+        if (std::find(methods.begin(), methods.end(), settings.method) == methods.end())
+            throw decomposeParDict_->error("method", "unknown partitioning method '" + settings.method +
+                                                         "'; valid methods: rcb, hsfc");
+        settings.maxImbalance = decomposeParDict_->getOrDefault<double>("maxImbalance", settings.maxImbalance);
+        if (!(settings.maxImbalance >= 1.0))
+            throw decomposeParDict_->error("maxImbalance", "maxImbalance must be at least 1 (the heaviest rank's "
+                                                           "load over the mean that triggers a rebalance)");
+    }
+    decomposition_ = std::make_unique<Decomposition>(settings, particles_->dimension());
+    decomposition_->distribute(*particles_, particleFile);
+    Log::info("Decomposed over " + std::to_string(Communicator::size()) + " ranks (" + settings.method + ")");
 }
 
 SolverRun::~SolverRun() = default;
@@ -243,6 +271,7 @@ bool inEtc(const std::shared_ptr<const std::string>& file, const std::vector<fs:
 
 void SolverRun::checkUnusedEntries(const Solver& solver) const {
     std::vector<const Dictionary*> dicts{&controlDict_};
+    if (decomposeParDict_) dicts.push_back(&*decomposeParDict_);
     for (const Dictionary* d : solver.dictionaries()) dicts.push_back(d);
     // A shared data sheet (etc/materials/copperTaylorBar) states more properties than any one
     // model reads (E and nu beside the shear and bulk moduli): what the chosen models left of it
@@ -283,6 +312,9 @@ int SolverRun::run(Solver& solver) {
                   case_.systemFile("controlDict").string() + " to continue it\nEnd");
         return 0;
     }
+    if (decomposition_ && !solver.runsDistributed())
+        throw InputError(application_ + " does not run on several ranks yet (issue 21: impactSph does); run it "
+                                        "without mpirun, on one process");
     if (state_) solver.restoreSolverState(*state_);
     FunctionObjectList functions(controlDict_, solver);
     if (auto named = controlDict_.getOptional<std::string>("application"); named && *named != application_)

@@ -31,6 +31,7 @@
 namespace mfdyn {
 
 class CaseLock;
+class Decomposition;
 class PvdIndex;
 class Solver;
 
@@ -51,10 +52,15 @@ public:
     // The start time's state dictionary, if the start is a restart.
     const Dictionary* restartState() const { return state_ ? &*state_ : nullptr; }
 
+    // The domain decomposition of a run on several ranks (system/decomposeParDict), which has
+    // already kept this rank's share of the particles; nullptr on one process.
+    Decomposition* decomposition() { return decomposition_.get(); }
+
     // The time loop; returns the exit status.
     int run(Solver& solver);
 
 private:
+    void decompose(const std::string& particleFile);
     void prepareOutputs();
     void write(Solver& solver);
     void purge();
@@ -73,6 +79,8 @@ private:
     // re-reading it at every write would cost time quadratic in the number of writes.
     std::unique_ptr<PvdIndex> pvd_;
     std::unique_ptr<ParticleSetBase> particles_;
+    std::unique_ptr<Decomposition> decomposition_;
+    std::optional<Dictionary> decomposeParDict_;
     std::optional<Dictionary> state_;
     Stopwatch clock_;
     double writeSeconds_ = 0;

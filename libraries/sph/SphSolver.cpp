@@ -30,6 +30,7 @@
 #include "core/Log.hpp"
 #include "core/MessageText.hpp"
 #include "core/Parallel.hpp"
+#include "particles/Decomposition.hpp"
 #include "solver/MaterialAssignment.hpp"
 #include "solver/SolverRegistry.hpp"
 #include "solver/SolverRun.hpp"
@@ -163,6 +164,19 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
                                   "artificial stress acts on solids: no material has a strength law");
     }
     boundaries_ = readBoundaryConditions(*particles_);
+    decomposition_ = run.decomposition();
+    if (decomposition_) {
+        if (boundaries_.makesGhosts())
+            throw InputError("impactSph: mirror-ghost boundary conditions (mirrorPlane, symmetryPlane, ...) do not "
+                             "run on several ranks yet (issue 21): run this case without mpirun");
+        // What the phases read of a neighbour before they refresh it themselves: the kernel
+        // factors and density sums read x, h, m and rho, the force loop v, e and the stress
+        // (tau refreshed by its reflection); p, c, omega and the number density are refreshed
+        // where they are computed (copyToGhosts). The half-step fields never travel.
+        haloFields_ = {"position", "velocity", "mass", "density", "smoothingLength", "material"};
+        if (e_) haloFields_.push_back("specificInternalEnergy");
+        if (tau_) haloFields_.push_back("deviatoricStress");
+    }
 }
 
 template <int Dim>
@@ -249,6 +263,13 @@ void SphSolver<Dim>::initialiseFields() {
 // impactSph.mirrorGhostsKept.
 template <int Dim>
 void SphSolver<Dim>::addGhosts() {
+    if (decomposition_) {
+        // The halo first (other ranks' particles within reach), with the fields the phases read
+        // of their neighbours before they refresh them (haloFields_).
+        decomposition_->appendHalo(*particles_, haloFields_);
+        const std::size_t n = x_.size();
+        a_.resize(n), b_.resize(n), cc_.resize(n);
+    }
     if (!boundaries_.makesGhosts()) return;
     const std::size_t owned = particles_->ownedCount();
     // Global: the layer of one rank is seen by the particles of every rank near the plane, so it
@@ -342,6 +363,67 @@ void SphSolver<Dim>::removeGhosts() {
     topologyAfterGhosts_ = particles_->topologyVersion();
 }
 
+// The median support radius the Verlet skin is a fraction of. On several ranks the median of
+// the owned particles of all ranks (the halo would count a particle twice), so every rank and
+// the serial run take the same skin.
+template <int Dim>
+double SphSolver<Dim>::medianSupport(const std::vector<double>& radius) const {
+    if (decomposition_)
+        return globalMedian(std::vector<double>(radius.begin(), radius.begin() + long(particles_->ownedCount())));
+    std::vector<double> sorted(radius);
+    std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
+    return sorted.empty() ? 1.0 : sorted[sorted.size() / 2];
+}
+
+// Several ranks (issue 21): the owned particles stay where they are, and the halo with them,
+// until some particle may have moved out of reach of its halo. The halo was planned with width
+// w = R_max + skin around each rank's part; a pair within the support R(t) of particles that
+// moved d_i and d_j since is covered while R_max(t) + d_i + d_j <= w, so the particles migrate
+// to their owners (and the halo is planned again) when 2 max d + R_max(t) > w: a global test,
+// one reduction a step. Only at the start of a step: the predictor-corrector's midpoint copies
+// the state by index, so it may not move particles; it checks the halo still covers instead.
+template <int Dim>
+void SphSolver<Dim>::updateDecomposition() {
+    auto timed = phase("updateNeighbours");
+    const std::size_t n = particles_->ownedCount();
+    const double rMax = GlobalReduce::max(n, [&](std::size_t i) { return kernel_->supportRadius(h_[i]); });
+    if (skin_ < 0) {
+        std::vector<double> radius(n);
+        for (std::size_t i = 0; i < n; ++i) radius[i] = kernel_->supportRadius(h_[i]);
+        skin_ = neighbourSkin_ * medianSupport(radius);
+    }
+    bool due = xAtMigration_.size() != n || haloWidth_ == 0;
+    if (!due) {
+        const double dMax = GlobalReduce::max(n, [&](std::size_t i) { return (x_[i] - xAtMigration_[i]).norm(); });
+        due = 2 * dMax + rMax > haloWidth_;
+    }
+    if (!due) return;
+    if (midStep_)
+        throw RunError("impactSph: particles outran the halo of their rank within one step (more than half the "
+                       "Verlet skin in half a step); remedy: a smaller maxCo, or a larger neighbourSkin in "
+                       "constant/sphProperties");
+    // Each particle's cost is its candidate count (the pair loops' work): the load the partition
+    // balances.
+    std::vector<double> weights(n, 1.0);
+    if (verlet_ && verlet_->candidates().size() >= n) {
+        const auto& offsets = verlet_->candidates().offsets();
+        for (std::size_t i = 0; i < n; ++i) weights[i] = double(offsets[i + 1] - offsets[i]) + 1.0;
+    }
+    const bool first = haloWidth_ == 0;
+    const int rebalancesBefore = decomposition_->rebalances();
+    decomposition_->migrate(*particles_, weights);
+    haloWidth_ = rMax + skin_;
+    decomposition_->planHalo(*particles_, haloWidth_);
+    const std::size_t owned = particles_->ownedCount();
+    xAtMigration_.assign(x_.begin(), x_.begin() + long(owned));
+    // Per-particle scratch of the solver follows the new owned count (recomputed before use).
+    dvdt_.resize(owned), drhodt_.resize(owned), dedt_.resize(owned);
+    if (tau_) velocityGradient_.resize(owned), dtaudt_.resize(owned);
+    a_.resize(owned), b_.resize(owned), cc_.resize(owned);
+    if (first || decomposition_->rebalances() != rebalancesBefore)
+        Log::info(decomposition_->report(*particles_, {}));
+}
+
 template <int Dim>
 void SphSolver<Dim>::updateNeighbours() {
     auto timed = phase("updateNeighbours");
@@ -349,10 +431,7 @@ void SphSolver<Dim>::updateNeighbours() {
     radius.resize(x_.size());
     for (std::size_t i = 0; i < x_.size(); ++i) radius[i] = kernel_->supportRadius(h_[i]);
     if (!verlet_) {
-        std::vector<double> sorted(radius);
-        std::nth_element(sorted.begin(), sorted.begin() + long(sorted.size() / 2), sorted.end());
-        const double median = sorted.empty() ? 1.0 : sorted[sorted.size() / 2];
-        const double skin = neighbourSkin_ * median;
+        const double skin = neighbourSkin_ * medianSupport(radius);
         // Checked: the few particles that outrun the skin (a gas's free end, a strong shock's
         // front) are tested instead of rebuilding the whole list at almost every step.
         const bool checked = settings_.word("neighbourRebuild") == "checked";
@@ -363,7 +442,12 @@ void SphSolver<Dim>::updateNeighbours() {
     // Particles appended or removed (preStep) invalidate the list. Ghosts change the version at
     // every step (added, then cleared): with a kept layer addGhosts() watches the version itself
     // and invalidates the list when it builds the layer again; with everyStep it is rebuilt anyway.
-    if (!boundaries_.makesGhosts()) verlet_->track(particles_->topologyVersion());
+    // On several ranks the halo is appended at every evaluation but changes only with the owned
+    // particles (a migration): the list follows those.
+    if (decomposition_)
+        verlet_->track(particles_->ownedTopologyVersion());
+    else if (!boundaries_.makesGhosts())
+        verlet_->track(particles_->topologyVersion());
     if (verlet_->update(x_, radius)) ++rebuilds_;
     ++neighbourUpdates_;
     neighbours_.list = &verlet_->candidates();
@@ -614,6 +698,7 @@ void SphSolver<Dim>::computeRates() {
 template <int Dim>
 void SphSolver<Dim>::ensureRates() {
     if (ratesValid_) return;
+    if (decomposition_) updateDecomposition();
     addGhosts();
     updateNeighbours();
     if (hLaw_->iterative()) solveSmoothingLength();
@@ -815,7 +900,9 @@ void SphSolver<Dim>::stepPredictorCorrector(double dt) {
     updateSmoothingLength();
     timed.stop();
     ratesValid_ = false;
+    midStep_ = true;
     ensureRates();
+    midStep_ = false;
     timed.resume();
     // Corrector over the whole step with the midpoint rates (and the budget by the midpoint rule).
     advance(dt);

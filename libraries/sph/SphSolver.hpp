@@ -60,6 +60,8 @@
 
 namespace mfdyn {
 
+class Decomposition;
+
 template <int Dim>
 class SphSolver final : public Solver {
 public:
@@ -72,6 +74,7 @@ public:
 
     TimeStepVote stableTimeStep() override;
     void step(double dt) override;
+    bool runsDistributed() const override { return true; }
     ParticleSetBase& particles() override { return *particles_; }
     std::optional<double> internalEnergy() const override;
     std::optional<double> schemeDissipation() const override;
@@ -88,6 +91,8 @@ private:
     void ensureRates();
     void addGhosts();
     void buildGhostLayer(double hMax, double t);
+    void updateDecomposition();
+    double medianSupport(const std::vector<double>& radius) const;
     bool placeKeptGhosts(const GhostBlock<Dim>& layer);
     void removeGhosts();
     void updateNeighbours();
@@ -192,6 +197,13 @@ private:
     std::size_t rebuilds_ = 0, neighbourUpdates_ = 0;
     double pairInteractions_ = 0;  // candidate pairs visited by the force loop, summed over steps
     bool ratesValid_ = false;
+    // Several ranks (issue 21): the decomposition (SolverRun's), the fields its halo carries,
+    // the owned positions at the last migration, the halo's width and the Verlet skin (global).
+    Decomposition* decomposition_ = nullptr;
+    std::vector<std::string> haloFields_;
+    std::vector<Vector<Dim>> xAtMigration_;
+    double haloWidth_ = 0, skin_ = -1;
+    bool midStep_ = false;
     bool started_ = false;
     // The energy budget of the health check (SphSolver.cpp, measurePower): D and W since the
     // solver was constructed, the powers of the latest rate evaluation, and the leapfrog's step
