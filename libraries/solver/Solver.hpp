@@ -52,9 +52,6 @@ public:
     virtual void step(double dt) = 0;
 
     virtual ParticleSetBase& particles() = 0;
-    // Whether this solver runs on several ranks (MPI domain decomposition, issue 21); a solver
-    // that does not is refused under mpirun before anything is written.
-    virtual bool runsDistributed() const { return false; }
     const FieldStore& fields() const override { return const_cast<Solver*>(this)->particles(); }
 
     // Extra entries for <time>/state beyond the time counters, and their restore.

@@ -59,6 +59,7 @@ struct Registration {
         add(
             name, description,
             [](SolverRun& run) {
+                if (!runsOnSeveralRanks<SolverType>()) run.refuseSeveralRanks();
                 return withDimension(run.dimension(), [&](auto dim) -> std::unique_ptr<Solver> {
                     return std::make_unique<SolverType<decltype(dim)::value>>(run);
                 });

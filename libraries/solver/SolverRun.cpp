@@ -152,6 +152,12 @@ void SolverRun::decompose(const std::string& particleFile) {
 
 SolverRun::~SolverRun() = default;
 
+void SolverRun::refuseSeveralRanks() const {
+    if (decomposition_)
+        throw InputError(application_ + " does not run on several ranks yet (issue 21: impactSph does); run it "
+                                        "without mpirun, on one process");
+}
+
 void SolverRun::prepareOutputs() {
     if (const std::size_t n = removeStaleTemporaries(case_.root()))
         Log::info("Cleared " + std::to_string(n) + " temporaries left in " + case_.root().string() +
@@ -312,9 +318,6 @@ int SolverRun::run(Solver& solver) {
                   case_.systemFile("controlDict").string() + " to continue it\nEnd");
         return 0;
     }
-    if (decomposition_ && !solver.runsDistributed())
-        throw InputError(application_ + " does not run on several ranks yet (issue 21: impactSph does); run it "
-                                        "without mpirun, on one process");
     if (state_) solver.restoreSolverState(*state_);
     FunctionObjectList functions(controlDict_, solver);
     if (auto named = controlDict_.getOptional<std::string>("application"); named && *named != application_)

@@ -56,6 +56,9 @@ public:
     // already kept this rank's share of the particles; nullptr on one process.
     Decomposition* decomposition() { return decomposition_.get(); }
 
+    // Under mpirun with more than one rank: an InputError, the same on every rank.
+    void refuseSeveralRanks() const;
+
     // The time loop; returns the exit status.
     int run(Solver& solver);
 
@@ -89,9 +92,21 @@ private:
     bool strictDictionaries_ = false;  // controlDict's strictDictionaries: never-read entries are errors
 };
 
+// A solver runs on several ranks when its class says `static constexpr bool runsOnSeveralRanks =
+// true;` (issue 21: impactSph); any other is refused under mpirun before it is constructed (its
+// set-up would see one rank's share of the particles) and before anything is written.
+template <template <int> class SolverType>
+constexpr bool runsOnSeveralRanks() {
+    if constexpr (requires { SolverType<1>::runsOnSeveralRanks; })
+        return SolverType<1>::runsOnSeveralRanks;
+    else
+        return false;
+}
+
 template <template <int> class SolverType>
 int runSolver(const Arguments& args, const std::string& application) {
     SolverRun run(args, application);
+    if (!runsOnSeveralRanks<SolverType>()) run.refuseSeveralRanks();
     return withDimension(run.dimension(), [&](auto dim) {
         SolverType<decltype(dim)::value> solver(run);
         return run.run(solver);

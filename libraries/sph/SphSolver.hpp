@@ -68,13 +68,15 @@ public:
     // The keywords of constant/sphProperties (read through it; -describe, doc/models/solver).
     static KeywordSchema keywords();
     static constexpr const char* propertiesDictionary = "sphProperties";
+    // Runs on several ranks (issue 21; SolverRun.hpp: runSolver).
+    static constexpr bool runsOnSeveralRanks = true;
 
     explicit SphSolver(SolverRun& run);
     ~SphSolver() override;
 
     TimeStepVote stableTimeStep() override;
     void step(double dt) override;
-    bool runsDistributed() const override { return true; }
+
     ParticleSetBase& particles() override { return *particles_; }
     std::optional<double> internalEnergy() const override;
     std::optional<double> schemeDissipation() const override;

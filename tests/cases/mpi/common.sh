@@ -1,0 +1,72 @@
+# Shared by the distributed-run scripts (issue 21): $1 = build directory, $2 = source root,
+# $3 = the MPI launcher (CMake's MPIEXEC_EXECUTABLE).
+set -euo pipefail
+BUILD="$1"
+SOURCE="$2"
+MPIEXEC="$3"
+export PATH="$BUILD/bin:$PATH"
+export MFDYN_LIBRARY_PATH="$BUILD/testLibraries"
+export OMP_NUM_THREADS=1
+WORK="$(mktemp -d "${TMPDIR:-/tmp}/mfdyn-mpi.XXXXXX")"
+trap 'rm -rf "$WORK"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+pass() { echo "PASS: $*"; }
+
+# onRanks <n> <application> <args...>: the application on n ranks (more ranks than the 2 cores
+# of CI: --oversubscribe; root in a container: --allow-run-as-root), its status returned; after
+# $RANKS_TIMEOUT seconds (default 300) it is stopped with status 124: a hang.
+onRanks() {
+    local n="$1"
+    shift
+    local root=()
+    [ "$(id -u)" = 0 ] && root=(--allow-run-as-root)
+    timeout "${RANKS_TIMEOUT:-300}" "$MPIEXEC" "${root[@]}" --oversubscribe -x OMP_NUM_THREADS -x MFDYN_LIBRARY_PATH \
+        -x PATH -np "$n" "$@"
+}
+
+# sodCase <name> <endTime>: Sod's tube (tutorials/impactSph/sodShockTube, 900 particles in 1D).
+sodCase() {
+    local c="$WORK/$1"
+    mkdir -p "$c" && cp -r "$SOURCE/tutorials/impactSph/sodShockTube/system" \
+        "$SOURCE/tutorials/impactSph/sodShockTube/constant" "$c/"
+    mfDictionary "$c/system/controlDict" -entry endTime -set "$2" > /dev/null
+    particleGen -case "$c" > "$c/log.particleGen" 2>&1 || fail "particleGen: $(tail -3 "$c/log.particleGen")"
+    echo "$c"
+}
+
+# hviCase <name> <endTime>: the Al-Al hypervelocity impact at a 0.5 mm lattice (1803 particles, 2D,
+# Mie-Grüneisen with von Mises strength and plastic strain).
+hviCase() {
+    local c="$WORK/$1"
+    mkdir -p "$c" && cp -r "$SOURCE/tutorials/impactSph/hviAlAl/system" "$SOURCE/tutorials/impactSph/hviAlAl/constant" "$c/"
+    for region in projectile plate; do
+        mfDictionary "$c/system/particleGenDict" -entry regions/$region/lattice/spacing -set 5e-4 > /dev/null
+    done
+    mfDictionary "$c/system/controlDict" -entry endTime -set "$2" > /dev/null
+    mfDictionary "$c/system/controlDict" -entry writeInterval -set "$2" > /dev/null
+    particleGen -case "$c" > "$c/log.particleGen" 2>&1 || fail "particleGen: $(tail -3 "$c/log.particleGen")"
+    echo "$c"
+}
+
+# copyCase <from> <to>: the case with its initial time only.
+copyCase() {
+    mkdir -p "$2" && cp -r "$1/system" "$1/constant" "$1/0" "$2/"
+    echo "$2"
+}
+
+# sameState <name> <a> <b>: particleCompare's verdict at 1e-12, its table kept in the test's output.
+sameState() {
+    local out
+    out=$(particleCompare "$2" "$3" -tolerance 1e-12 2>&1) || fail "$1: the states differ:
+$out"
+    echo "$1:"
+    echo "$out" | sed 's/^/    /'
+}
+
+# latest <case>: its latest time directory.
+latest() {
+    local t
+    t=$(cd "$1" && ls -d [0-9]* 2>/dev/null | grep -E '^[0-9.e+-]+$' | sort -g | tail -n 1)
+    [ -n "$t" ] || fail "no time directory in $1"
+    echo "$1/$t"
+}
