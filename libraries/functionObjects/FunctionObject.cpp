@@ -143,8 +143,9 @@ FunctionObjectList::FunctionObjectList(const Dictionary& controlDict, const RunC
     // First: a state it stops on is never seen (and written into a CSV) by the objects after it.
     if (controlDict.findDict("health")) {
         if (healthListed)
-            throw controlDict.error("health", "the health check is set twice: here and as a function object "
-                                              "of type health in `functions`; keep one");
+            throw controlDict.error("health",
+                                    "the health check is set twice: here and as a function object "
+                                    "of type health in `functions`; keep one");
         objects_.push_back(std::make_unique<Health>(controlDict.subDict("health"), "health", context));
     } else if (!healthListed && controlDict.getOrDefault<bool>("health", true)) {
         const Dictionary defaults;  // every keyword at its default (read in the constructor, not kept)
@@ -165,7 +166,8 @@ void FunctionObjectList::execute(bool solverWrites) {
 
 std::string FunctionObjectList::stopRequest() const {
     for (const auto& object : objects_)
-        if (object->stopRequested()) return "function object '" + object->name() + "' (" + object->stopReason() + ")";
+        if (object->stopRequested())
+            return "function object '" + object->name() + "' (" + object->stopReason() + ")";
     return {};
 }
 
