@@ -20,7 +20,7 @@ namespace mfdyn {
 
 namespace {
 const BodyForceSolver& bodyForceSolver(const Dictionary& dict, const RunContext& context) {
-    auto* solver = dynamic_cast<const BodyForceSolver*>(&context);
+    auto* solver = dynamic_cast<const BodyForceSolver*>(&context.solverContext());
     if (!solver)
         throw dict.error("type", "trajectoryError needs a solver with a body force (particleFlight)");
     return *solver;
@@ -36,7 +36,7 @@ TrajectoryError::TrajectoryError(const Dictionary& dict, const std::string& name
 
 TrajectoryError::TrajectoryError(const KeywordValues& values, const std::string& name,
                                  const RunContext& context)
-    : FunctionObject(values, name, context),
+    : FunctionObject(values, name, context, ParticleScope::owned),
       solver_(bodyForceSolver(values.dict(), context)),
       t0_(context.time().value()),
       norms_(outputFile("errorNorms.csv"), name) {

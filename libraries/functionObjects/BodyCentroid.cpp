@@ -59,7 +59,7 @@ BodyCentroid::BodyCentroid(const Dictionary& dict, const std::string& name, cons
     : BodyCentroid(keywords().read(dict), name, context) {}
 
 BodyCentroid::BodyCentroid(const KeywordValues& values, const std::string& name, const RunContext& context)
-    : FunctionObject(values, name, context), level_(values.optionalScalar("level")) {
+    : FunctionObject(values, name, context, ParticleScope::owned), level_(values.optionalScalar("level")) {
     const Dictionary& dict = values.dict();
     const int dim = context.dimension();
     requireField(dict, "type", "mass");
@@ -97,7 +97,7 @@ BodyCentroid::BodyCentroid(const KeywordValues& values, const std::string& name,
 void BodyCentroid::write() {
     const FieldStore& fields = context().fields();
     const int dim = fields.dimension();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase& x = fields.field("position");
     const FieldBase& m = fields.field("mass");
     const FieldBase& region = fields.field("region");

@@ -120,7 +120,7 @@ BodyExtents::BodyExtents(const Dictionary& dict, const std::string& name, const 
     : BodyExtents(keywords().read(dict), name, context) {}
 
 BodyExtents::BodyExtents(const KeywordValues& values, const std::string& name, const RunContext& context)
-    : FunctionObject(values, name, context),
+    : FunctionObject(values, name, context, ParticleScope::owned),
       lines_(values.word("mode") == "lines"),
       radius_(values.word("mode") == "radius") {
     const Dictionary& dict = values.dict();
@@ -189,7 +189,7 @@ BodyExtents::BodyExtents(const KeywordValues& values, const std::string& name, c
 
 void BodyExtents::chooseLines() {
     const FieldStore& fields = context().fields();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase& x = fields.field("position");
     const FieldBase& gid = fields.field("globalId");
     const FieldBase* region = region_ >= 0 ? &fields.field("region") : nullptr;
@@ -236,7 +236,7 @@ void BodyExtents::chooseLines() {
 void BodyExtents::write() {
     const FieldStore& fields = context().fields();
     const int dim = fields.dimension();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase& x = fields.field("position");
     const FieldBase* region = region_ >= 0 ? &fields.field("region") : nullptr;
     const auto member = [&](std::size_t i) {
@@ -291,7 +291,7 @@ void BodyExtents::writeDirections(std::vector<double>& row) const {
     if (directions_.empty()) return;
     const FieldStore& fields = context().fields();
     const int dim = fields.dimension();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase& x = fields.field("position");
     const FieldBase* region = region_ >= 0 ? &fields.field("region") : nullptr;
     const double inf = std::numeric_limits<double>::infinity();
@@ -312,7 +312,7 @@ void BodyExtents::writeDirections(std::vector<double>& row) const {
 void BodyExtents::writeRadius(std::vector<double>& row) const {
     const FieldStore& fields = context().fields();
     const int dim = fields.dimension();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase& x = fields.field("position");
     const FieldBase* region = region_ >= 0 ? &fields.field("region") : nullptr;
     // The centre: given, or the centroid (mass-weighted where there are masses, like bodyCentroid).

@@ -49,7 +49,8 @@ ConservedQuantities::ConservedQuantities(const Dictionary& dict, const std::stri
 
 ConservedQuantities::ConservedQuantities(const KeywordValues& values, const std::string& name,
                                          const RunContext& context)
-    : FunctionObject(values, name, context), maxGrowth_(values.optionalScalar("maxEnergyGrowth")) {
+    : FunctionObject(values, name, context, ParticleScope::owned),
+      maxGrowth_(values.optionalScalar("maxEnergyGrowth")) {
     const int dim = context.dimension();
     const char* axes[] = {"x", "y", "z"};
     columns_ = {"time", "mass"};
@@ -67,7 +68,7 @@ ConservedQuantities::ConservedQuantities(const KeywordValues& values, const std:
 std::vector<double> ConservedQuantities::measure() const {
     const FieldStore& fields = context().fields();
     const int dim = fields.dimension();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase* massField = fields.findField("mass");
     const FieldBase& position = fields.field("position");
     const FieldBase* velocity = fields.findField("velocity");

@@ -86,7 +86,7 @@ Health::Health(const Dictionary& dict, const std::string& name, const RunContext
     : Health(keywords().read(dict), name, context) {}
 
 Health::Health(const KeywordValues& values, const std::string& name, const RunContext& context)
-    : FunctionObject(values, name, context),
+    : FunctionObject(values, name, context, ParticleScope::owned),
       checkInterval_(values.integer("checkInterval")),
       minTimeStepFraction_(values.scalar("minTimeStepFraction")),
       maxEnergyImbalance_(values.optionalScalar("maxEnergyImbalance")),

@@ -69,7 +69,7 @@ HydrostaticPressure::HydrostaticPressure(const Dictionary& dict, const std::stri
 
 HydrostaticPressure::HydrostaticPressure(const KeywordValues& values, const std::string& name,
                                          const RunContext& context)
-    : FunctionObject(values, name, context),
+    : FunctionObject(values, name, context, ParticleScope::owned),
       rho_(values.scalar("rho")),
       g_(values.scalar("g")),
       freeSurface_(values.optionalScalar("freeSurface")),
@@ -116,7 +116,7 @@ HydrostaticPressure::HydrostaticPressure(const KeywordValues& values, const std:
 void HydrostaticPressure::write() {
     const FieldStore& fields = context().fields();
     const int dim = fields.dimension();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase& x = fields.field("position");
     const FieldBase& p = fields.field("pressure");
     const FieldBase* region = region_ >= 0 ? &fields.field("region") : nullptr;

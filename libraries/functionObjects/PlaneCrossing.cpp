@@ -51,7 +51,7 @@ PlaneCrossing::PlaneCrossing(const Dictionary& dict, const std::string& name, co
     : PlaneCrossing(keywords().read(dict), name, context) {}
 
 PlaneCrossing::PlaneCrossing(const KeywordValues& values, const std::string& name, const RunContext& context)
-    : FunctionObject(values, name, context),
+    : FunctionObject(values, name, context, ParticleScope::owned),
       stop_(values.flag("stopAtCrossing")),
       reference_(values.optionalScalar("reference")) {
     const Dictionary& dict = values.dict();
@@ -88,7 +88,7 @@ PlaneCrossing::PlaneCrossing(const KeywordValues& values, const std::string& nam
 void PlaneCrossing::write() {
     const FieldStore& fields = context().fields();
     const int dim = fields.dimension();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase& x = fields.field("position");
     const FieldBase& gid = fields.field("globalId");
     const FieldBase* region = region_ >= 0 ? &fields.field("region") : nullptr;

@@ -57,7 +57,7 @@ public:
 
 private:
     PlantFault(const KeywordValues& v, const std::string& name, const RunContext& context)
-        : FunctionObject(v, name, context),
+        : FunctionObject(v, name, context, ParticleScope::owned),
           time_(v.scalar("time")),
           particle_(v.integer("particle")),
           field_(v.word("field")),
