@@ -31,9 +31,11 @@
 // l_d2 ... for the directions. With `reference` (one value per l_x l_y ..., modes bounds and
 // lines), the latest extents and their errors go into the summary beside the run time
 // (referenceValues l_x, l_y ...).
-// Extremes are global reductions (max, min), so an MPI build measures the whole body.
+// Extremes and sums are global reductions, and the ids of mode lines' row and column are those of
+// every rank, so an MPI build measures the whole body.
 #include "functionObjects/BodyExtents.hpp"
 
+#include "core/Communicator.hpp"
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "core/Parallel.hpp"
@@ -43,6 +45,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace mfdyn {
@@ -88,6 +91,23 @@ std::vector<std::array<double, 3>> readDirections(const Dictionary& dict, int di
     }
     if (out.empty()) throw bad("the list is empty");
     return out;
+}
+
+// The ids of every rank together, sorted (collective).
+std::vector<std::int64_t> allRanksIds(const std::vector<std::int64_t>& mine) {
+    std::vector<std::int64_t> all = mine;
+    if (Communicator::distributed()) {
+        std::vector<char> bytes(mine.size() * sizeof(std::int64_t));
+        if (!bytes.empty()) std::memcpy(bytes.data(), mine.data(), bytes.size());
+        all.clear();
+        for (const auto& part : Communicator::allGatherVariable(bytes)) {
+            const std::size_t first = all.size();
+            all.resize(first + part.size() / sizeof(std::int64_t));
+            if (!part.empty()) std::memcpy(all.data() + first, part.data(), part.size());
+        }
+    }
+    std::sort(all.begin(), all.end());
+    return all;
 }
 }  // namespace
 
@@ -228,9 +248,9 @@ void BodyExtents::chooseLines() {
         if (hi[1] - x.component(i, 1) <= tolerance[1]) row_.push_back(id);
         if (std::abs(x.component(i, 0) - chosen) <= tolerance[0]) column_.push_back(id);
     }
-    // (An MPI build would gather the ids of every rank here.)
-    std::sort(row_.begin(), row_.end());
-    std::sort(column_.begin(), column_.end());
+    // Every rank's, on every rank: a particle of the row may move to another rank later.
+    row_ = allRanksIds(row_);
+    column_ = allRanksIds(column_);
 }
 
 void BodyExtents::write() {
