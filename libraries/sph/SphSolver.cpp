@@ -1086,23 +1086,34 @@ std::vector<HealthIndicator> SphSolver<Dim>::healthIndicators() const {
     s.tau = tau_ ? tau_->data() : nullptr;
     s.globalId = particles_->globalId().data();
     s.W = W_;
-    std::vector<Vector<Dim>> x, v;
-    std::vector<double> m, rho, h, p;
+    // Between steps the set holds no ghosts: the neighbours a particle has beyond its rank (the
+    // halo, refreshed here from the last plan, which still covers) and across the mirror planes
+    // are gathered into copies, [owned][halo][images], or a particle at a rank's cut would look
+    // like one at a free surface.
+    const std::size_t halo = decomposition_ ? decomposition_->haloSize() : 0;
+    if (halo == 0 && !boundaries_.makesGhosts()) return sphHealthIndicators(s);
     GhostBlock<Dim> layer;
     if (boundaries_.makesGhosts()) {
         const double hMax = GlobalReduce::max(owned, [&](std::size_t i) { return h_[i]; });
         layer = boundaries_.ghosts(*particles_, v_, kernel_->supportRadius(hMax) / 3.0, time().value());
-        auto extend = [&](auto& out, const auto& field, const auto& images) {
-            out.assign(field.begin(), field.begin() + std::ptrdiff_t(owned));
-            out.insert(out.end(), images.begin(), images.end());
-            return out.data();
-        };
-        s.size = owned + layer.size();
-        s.x = extend(x, x_, layer.position), s.v = extend(v, v_, layer.velocity);
-        s.m = extend(m, m_, layer.gather(m_)), s.rho = extend(rho, rho_, layer.gather(rho_));
-        s.h = extend(h, h_, layer.gather(h_)), s.p = extend(p, p_, layer.gather(p_));
-        s.imageOf = layer.source.data();
     }
+    std::vector<Vector<Dim>> x, v;
+    std::vector<double> m, rho, h, p;
+    auto extend = [&](auto& out, const auto& field, const auto& images) {
+        out.assign(field.begin(), field.begin() + std::ptrdiff_t(owned));
+        out.resize(owned + halo);
+        if (halo) decomposition_->refresh(out.data(), sizeof(out[0]), owned);
+        out.insert(out.end(), images.begin(), images.end());
+        return out.data();
+    };
+    s.size = owned + halo + layer.size();
+    s.x = extend(x, x_, layer.position), s.v = extend(v, v_, layer.velocity);
+    s.m = extend(m, m_, layer.gather(m_)), s.rho = extend(rho, rho_, layer.gather(rho_));
+    s.h = extend(h, h_, layer.gather(h_)), s.p = extend(p, p_, layer.gather(p_));
+    // A halo particle images no one (an index no owned particle has).
+    std::vector<std::size_t> imageOf(halo, std::numeric_limits<std::size_t>::max());
+    imageOf.insert(imageOf.end(), layer.source.begin(), layer.source.end());
+    s.imageOf = imageOf.data();
     return sphHealthIndicators(s);
 }
 
