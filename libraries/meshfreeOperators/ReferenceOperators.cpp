@@ -10,6 +10,7 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <optional>
 #include <sstream>
 
@@ -62,7 +63,8 @@ bool wellConditioned(const Eigen::Matrix<double, N, N>& m) {
 
 template <int Dim>
 void throwFirstFailure(const std::vector<unsigned char>& failure, const std::vector<Vector<Dim>>& X,
-                       const NeighbourList& list, double h, double support) {
+                       const NeighbourList& list, double h, double support,
+                       const std::vector<std::size_t>& original) {
     const auto it = std::find_if(failure.begin(), failure.end(), [](unsigned char f) { return f != none; });
     if (it == failure.end()) return;
     const std::size_t a = std::size_t(it - failure.begin());
@@ -87,8 +89,9 @@ void throwFirstFailure(const std::vector<unsigned char>& failure, const std::vec
             break;
     }
     std::ostringstream msg;
-    msg << "ReferenceOperators: particle " << a << " at X = " << pointText<Dim>(X[a]) << " " << what << " ("
-        << list.rowSize(a) << " neighbours within " << support << " = supportRadius(h = " << h << ")";
+    msg << "ReferenceOperators: particle " << (original.empty() ? a : original[a])
+        << " at X = " << pointText<Dim>(X[a]) << " " << what << " (" << list.rowSize(a)
+        << " neighbours within " << support << " = supportRadius(h = " << h << ")";
     if (count > 1) msg << "; " << count - 1 << " more particles fail alike";
     msg << "). Too few neighbours, or all on a line or plane: increase h relative to the particle spacing"
            " (h = 1.2-1.3 dx is usual), or remove isolated particles.";
@@ -114,6 +117,30 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
                         " at X = " + pointText<Dim>(X_[a]) + " has volume " + std::to_string(volume_[a]) +
                         "; volumes must be positive");
     if (n == 0) return;
+    // Options::order: the points sorted by their keys, so that the rows (sorted by index) follow
+    // the keys; relabel() restores the caller's numbering at the end.
+    std::vector<std::size_t> original;
+    if (!options_.order.empty()) {
+        const auto& key = options_.order;
+        if (key.size() != n)
+            throw Error("ReferenceOperators: " + std::to_string(key.size()) + " order keys for " +
+                        std::to_string(n) + " particles");
+        original.resize(n);
+        std::iota(original.begin(), original.end(), std::size_t(0));
+        std::sort(original.begin(), original.end(),
+                  [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+        for (std::size_t s = 1; s < n; ++s)
+            if (key[original[s]] == key[original[s - 1]])
+                throw Error("ReferenceOperators: particles " + std::to_string(original[s - 1]) + " and " +
+                            std::to_string(original[s]) + " have the same order key " +
+                            std::to_string(key[original[s]]));
+        std::vector<Vector<Dim>> sortedX(n);
+        std::vector<double> sortedVolume(n);
+        for (std::size_t s = 0; s < n; ++s)
+            sortedX[s] = X_[original[s]], sortedVolume[s] = volume_[original[s]];
+        X_ = std::move(sortedX);
+        volume_ = std::move(sortedVolume);
+    }
 
     const double support = kernel.supportRadius(h);
     NeighbourSearchOptions searchOptions;
@@ -128,6 +155,17 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
     const std::size_t pairs = list_.pairCount();
     const KernelEvaluator<Dim> W = kernel.evaluator<Dim>();
     std::vector<unsigned char> failure(n, none);
+
+    // The rows computed (Options::interior): the interior points' and their neighbours'.
+    std::vector<char> active(n, 1);
+    if (options_.interior < n) {
+        std::fill(active.begin(), active.end(), 0);
+        for (std::size_t s = 0; s < n; ++s) {
+            if ((original.empty() ? s : original[s]) >= options_.interior) continue;
+            active[s] = 1;
+            for (const NeighbourList::Index b : list_[s]) active[b] = 1;
+        }
+    }
 
     // The order-1 least-squares gradient on the reference rows (difference form), with failures
     // flagged so that they are reported below in this class's words. Same threshold as the
@@ -147,6 +185,7 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
     // Mirror pairs: the list is symmetric (one support radius), so a is in row b.
     mirror_.assign(pairs, 0);
     parallelFor(n, [&](std::size_t a) {
+        if (!active[a]) return;
         if (list_.rowSize(a) == 0) failure[a] = noNeighbours;
         for (std::size_t k = offsets[a]; k < offsets[a + 1]; ++k) {
             const std::size_t b = indices[k];
@@ -159,12 +198,13 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
                 mirror_[k] = std::size_t(it - indices.begin());
         }
     });
-    throwFirstFailure<Dim>(failure, X_, list_, h, support);
+    throwFirstFailure<Dim>(failure, X_, list_, h, support, original);
 
     // Plain kernel gradients grad W_b(X_a) and values W_b(X_a) per pair.
     std::vector<Vector<Dim>> plainGradient(pairs);
     std::vector<double> value(pairs);
     parallelFor(n, [&](std::size_t a) {
+        if (!active[a]) return;
         for (std::size_t k = offsets[a]; k < offsets[a + 1]; ++k) {
             const Vector<Dim> r = X_[a] - X_[indices[k]];
             const double d = r.norm();
@@ -187,6 +227,7 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
         // least-squares gradient weights with w_ab = V_b W_b(X_a) (r_ab = -(X_b - X_a)).
         const LeastSquares kernelFit = leastSquaresGradient(LeastSquares::KernelWeight::value);
         parallelFor(n, [&](std::size_t a) {
+            if (!active[a]) return;
             if (kernelFit.status()[a] != LeastSquares::Status::ok) {
                 failure[a] = kernelMatrix;
                 return;
@@ -199,7 +240,7 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
             beta[a] = be;
             alpha[a] = 1.0 / sum;
         });
-        throwFirstFailure<Dim>(failure, X_, list_, h, support);
+        throwFirstFailure<Dim>(failure, X_, list_, h, support, original);
         if (options_.correctedKernel) {
             correctedKernel_.assign(pairs, 0.0);
             correctedKernelSelf_.assign(n, 0.0);
@@ -217,6 +258,7 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
         correctedFit.emplace(leastSquaresGradient(LeastSquares::KernelWeight::radialDerivative));
     gradient_.assign(pairs, Vector<Dim>::Zero());
     parallelFor(n, [&](std::size_t a) {
+        if (!active[a]) return;
         const std::size_t k0 = offsets[a], k1 = offsets[a + 1];
         if (options_.gradient == GradientCorrection::uncorrected) {
             for (std::size_t k = k0; k < k1; ++k) gradient_[k] = plainGradient[k];
@@ -248,10 +290,11 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
         const Tensor<Dim> L = M.inverse();
         for (std::size_t k = k0; k < k1; ++k) gradient_[k] = L * gradient_[k];
     });
-    throwFirstFailure<Dim>(failure, X_, list_, h, support);
+    throwFirstFailure<Dim>(failure, X_, list_, h, support, original);
 
     gradientAtNeighbour_.resize(pairs);
     parallelFor(n, [&](std::size_t a) {
+        if (!active[a]) return;
         for (std::size_t k = offsets[a]; k < offsets[a + 1]; ++k)
             gradientAtNeighbour_[k] = gradient_[mirror_[k]];
     });
@@ -264,6 +307,7 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
         const double step = 1e-4 * h;
         laplacian_.assign(pairs, 0.0);
         parallelFor(n, [&](std::size_t a) {
+            if (!active[a]) return;
             const std::size_t k0 = offsets[a], k1 = offsets[a + 1];
             Matrix A = Matrix::Zero();
             Column rhs = Column::Zero();
@@ -298,8 +342,46 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
                     (laplacian_[k] + c.template head<Dim>().dot(s) + c(Dim) * s.squaredNorm()) * invH2;
             }
         });
-        throwFirstFailure<Dim>(failure, X_, list_, h, support);
+        throwFirstFailure<Dim>(failure, X_, list_, h, support, original);
     }
+    if (!original.empty()) relabel(original);
+}
+
+template <int Dim>
+void ReferenceOperators<Dim>::relabel(const std::vector<std::size_t>& original) {
+    const std::size_t n = original.size(), pairs = list_.pairCount();
+    std::vector<std::size_t> place(n);
+    for (std::size_t s = 0; s < n; ++s) place[original[s]] = s;
+    const auto& oldOffsets = list_.offsets();
+    const auto& oldIndices = list_.indices();
+    std::vector<std::size_t> offsets(n + 1, 0);
+    for (std::size_t i = 0; i < n; ++i) offsets[i + 1] = offsets[i] + list_.rowSize(place[i]);
+    std::vector<std::size_t> newPair(pairs);  // a sorted pair's place in the caller's numbering
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < list_.rowSize(place[i]); ++j)
+            newPair[oldOffsets[place[i]] + j] = offsets[i] + j;
+    std::vector<NeighbourList::Index> indices(pairs);
+    std::vector<std::size_t> mirror(pairs);
+    for (std::size_t k = 0; k < pairs; ++k) {
+        indices[newPair[k]] = NeighbourList::Index(original[oldIndices[k]]);
+        mirror[newPair[k]] = newPair[mirror_[k]];
+    }
+    auto perPair = [&](auto& v) {
+        if (v.empty()) return;
+        auto out = v;
+        for (std::size_t k = 0; k < pairs; ++k) out[newPair[k]] = v[k];
+        v = std::move(out);
+    };
+    auto perPoint = [&](auto& v) {
+        if (v.empty()) return;
+        auto out = v;
+        for (std::size_t s = 0; s < n; ++s) out[original[s]] = v[s];
+        v = std::move(out);
+    };
+    perPair(gradient_), perPair(gradientAtNeighbour_), perPair(laplacian_), perPair(correctedKernel_);
+    perPoint(X_), perPoint(volume_), perPoint(correctedKernelSelf_);
+    mirror_ = std::move(mirror);
+    list_ = NeighbourList(std::move(offsets), std::move(indices));
 }
 
 template <int Dim>
