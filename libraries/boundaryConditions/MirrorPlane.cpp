@@ -79,7 +79,16 @@ void MirrorPlane<Dim>::ghostLayer(const ParticleSet<Dim>& particles, const std::
     const std::size_t earlier = block.size();  // ghosts of the conditions written before this one
     // Serial, in index order: the block is the same for any thread count, and the pass is one
     // dot product per particle, cheap next to the neighbour search it feeds.
-    const auto& selected = this->selection_.indices();
+    // The owned particles, then (MPI) the halo's: an image of another rank's particle near the
+    // plane is a neighbour of this rank's particles too.
+    std::vector<std::size_t> haloSources;
+    if (particles.haloCount() != 0) haloSources = this->selection_.haloIndices(particles);
+    std::vector<std::size_t> ownedAndHalo;
+    if (!haloSources.empty()) {
+        ownedAndHalo = this->selection_.indices();
+        ownedAndHalo.insert(ownedAndHalo.end(), haloSources.begin(), haloSources.end());
+    }
+    const auto& selected = haloSources.empty() ? this->selection_.indices() : ownedAndHalo;
     for (std::size_t i : selected) {
         const double d = plane_.signedDistance(x[i]);
         if (d <= plane_.tolerance() || d >= layer) continue;

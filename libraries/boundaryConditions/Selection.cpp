@@ -1,5 +1,7 @@
 #include "boundaryConditions/Selection.hpp"
 
+#include "core/Parallel.hpp"
+
 #include <algorithm>
 #include <unordered_set>
 
@@ -65,10 +67,28 @@ Selection<Dim>::Selection(const KeywordValues& values, const ParticleSet<Dim>& p
         shapeType_ = shapeDict.get<std::string>("type");
     }
     resolve(particles);
+    if (!all_ && !reselect_) {
+        wantedIds_ = globalConcatenation(globalIds_);
+        std::sort(wantedIds_.begin(), wantedIds_.end());
+    }
 }
 
 template <int Dim>
 Selection<Dim>::~Selection() = default;
+
+template <int Dim>
+std::vector<std::size_t> Selection<Dim>::haloIndices(const ParticleSet<Dim>& particles) const {
+    std::vector<std::size_t> halo;
+    const auto& ids = particles.globalId();
+    for (std::size_t i = particles.haloBegin(), end = i + particles.haloCount(); i < end; ++i) {
+        const bool selected =
+            all_ || (reselect_ ? matches(particles, i)
+                               : std::binary_search(wantedIds_.begin(), wantedIds_.end(), ids[i]) ||
+                                     (ids[i] >= newIdsFrom_ && matches(particles, i)));
+        if (selected) halo.push_back(i);
+    }
+    return halo;
+}
 
 template <int Dim>
 bool Selection<Dim>::matches(const ParticleSet<Dim>& particles, std::size_t i) const {
@@ -100,19 +120,26 @@ void Selection<Dim>::resolve(const ParticleSet<Dim>& particles) {
 template <int Dim>
 void Selection<Dim>::update(const ParticleSet<Dim>& particles) {
     if (all_ || reselect_) return resolve(particles);
-    // Same particles, new places: the selected ones found again by globalId.
-    std::unordered_set<std::int64_t> wanted(globalIds_.begin(), globalIds_.end());
+    // Same particles, new places: the selected ones found again by globalId (on any rank: a
+    // particle arrived from another rank is found too).
     const auto& ids = particles.globalId();
     indices_.clear();
-    std::vector<std::int64_t> kept;
+    std::vector<std::int64_t> kept, joined;
     // Particles removed by the solver (eroded, left the domain) drop out of the selection; those
     // appended since the last update, and only they, are judged by the criteria.
-    for (std::size_t i = 0, n = particles.ownedCount(); i < n; ++i)
-        if (wanted.count(ids[i]) || (ids[i] >= newIdsFrom_ && matches(particles, i))) {
+    for (std::size_t i = 0, n = particles.ownedCount(); i < n; ++i) {
+        const bool wanted = std::binary_search(wantedIds_.begin(), wantedIds_.end(), ids[i]);
+        if (wanted || (ids[i] >= newIdsFrom_ && matches(particles, i))) {
             indices_.push_back(i);
             kept.push_back(ids[i]);
+            if (!wanted) joined.push_back(ids[i]);
         }
+    }
     globalIds_ = std::move(kept);
+    if (!joined.empty()) {
+        wantedIds_.insert(wantedIds_.end(), joined.begin(), joined.end());
+        std::sort(wantedIds_.begin(), wantedIds_.end());
+    }
     record(particles);
 }
 

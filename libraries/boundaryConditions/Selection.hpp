@@ -11,7 +11,9 @@
 // `regions` is an error rather than a case in which nothing moves.
 //
 // The selection is resolved once, to an index list of owned particles (ghosts are never
-// selected). Indices go stale when the solver reorders particles (cell sorting) or changes
+// selected; haloIndices() gives the selected particles of an MPI halo). On several ranks the ids
+// selected at the start are gathered from every rank, so that update() after a migration finds a
+// particle that arrived from another rank. Indices go stale when the solver reorders particles (cell sorting) or changes
 // their number (ParticleSetBase::append/keep); update() then
 //   - keeps the same particles, found again by globalId (default): a removed particle drops
 //     out, a particle appended since the last update (a global id not issued then) is judged by
@@ -48,6 +50,9 @@ public:
 
     // Indices into the particle set, ascending.
     const std::vector<std::size_t>& indices() const { return indices_; }
+    // The selected particles of the set's halo (other ranks' particles this rank sees, MPI), for
+    // a condition whose images or forces reach across a rank boundary (mirrorPlane's sources).
+    std::vector<std::size_t> haloIndices(const ParticleSet<Dim>& particles) const;
     std::size_t size() const { return indices_.size(); }
     bool selectsAll() const { return all_; }
 
@@ -70,7 +75,10 @@ private:
     std::unique_ptr<Shape> shape_;
     std::string shapeType_;
     std::vector<std::size_t> indices_;
-    std::vector<std::int64_t> globalIds_;  // of indices_, for update() by identity
+    std::vector<std::int64_t> globalIds_;  // of indices_
+    // The ids selected by identity on every rank (sorted): a particle that migrates from another
+    // rank stays selected here. On one process, those of indices_ and the ones that joined since.
+    std::vector<std::int64_t> wantedIds_;
     std::int64_t newIdsFrom_ = 0;          // ids from this one on were not issued at the last update
     std::uint64_t topologyVersion_ = 0;    // of the particles at the last update
     bool matches(const ParticleSet<Dim>& particles, std::size_t i) const;

@@ -51,6 +51,20 @@ double globalMedian(const std::vector<double>& local) {
     return all[all.size() / 2];
 }
 
+std::vector<std::int64_t> globalConcatenation(const std::vector<std::int64_t>& local) {
+    globalReductionCount.fetch_add(1, std::memory_order_relaxed);
+    if (!Communicator::distributed()) return local;
+    std::vector<std::int64_t> all;
+    const char* bytes = reinterpret_cast<const char*>(local.data());
+    for (const auto& part :
+         Communicator::allGatherVariable(std::vector<char>(bytes, bytes + local.size() * sizeof(std::int64_t)))) {
+        const std::size_t k = part.size() / sizeof(std::int64_t), at = all.size();
+        all.resize(at + k);
+        if (k) std::memcpy(all.data() + at, part.data(), part.size());
+    }
+    return all;
+}
+
 std::string globalFirstMessage(std::int64_t key, std::string text) {
     globalReductionCount.fetch_add(1, std::memory_order_relaxed);
     if (!Communicator::distributed()) return text;

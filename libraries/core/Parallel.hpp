@@ -100,6 +100,8 @@ std::string globalFirstMessage(std::int64_t key, std::string text);
 // setting taken from "the median particle" (a Verlet skin) must be for every rank to agree with
 // a serial run. Gathers every value: for set-up, not for a time loop.
 double globalMedian(const std::vector<double>& local);
+// Every rank's values, in rank order, on every rank (a selection's global ids). Collective.
+std::vector<std::int64_t> globalConcatenation(const std::vector<std::int64_t>& local);
 
 struct LocalReduce {
     static constexpr std::size_t blockSize = 4096;

@@ -166,14 +166,12 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
     boundaries_ = readBoundaryConditions(*particles_);
     decomposition_ = run.decomposition();
     if (decomposition_) {
-        if (boundaries_.makesGhosts())
-            throw InputError("impactSph: mirror-ghost boundary conditions (mirrorPlane, symmetryPlane, ...) do not "
-                             "run on several ranks yet (issue 21): run this case without mpirun");
         // What the phases read of a neighbour before they refresh it themselves: the kernel
         // factors and density sums read x, h, m and rho, the force loop v, e and the stress
         // (tau refreshed by its reflection); p, c, omega and the number density are refreshed
         // where they are computed (copyToGhosts). The half-step fields never travel.
-        haloFields_ = {"position", "velocity", "mass", "density", "smoothingLength", "material"};
+        // The region too: a boundary condition's selection judges halo particles (mirror sources).
+        haloFields_ = {"position", "velocity", "mass", "density", "smoothingLength", "material", "region"};
         if (e_) haloFields_.push_back("specificInternalEnergy");
         if (tau_) haloFields_.push_back("deviatoricStress");
     }
@@ -263,6 +261,8 @@ void SphSolver<Dim>::initialiseFields() {
 // impactSph.mirrorGhostsKept.
 template <int Dim>
 void SphSolver<Dim>::addGhosts() {
+    // What the kept mirror layer is compared with: the set as removeGhosts() left it.
+    const std::uint64_t topologyBeforeHalo = particles_->topologyVersion();
     if (decomposition_) {
         // The halo first (other ranks' particles within reach), with the fields the phases read
         // of their neighbours before they refresh them (haloFields_).
@@ -283,7 +283,7 @@ void SphSolver<Dim>::addGhosts() {
     if (!ghostsEveryStep_) {
         // Particles appended, removed or reordered since the last step (preStep) make the kept
         // sources other particles'.
-        if (!ghostLayerKept_ || particles_->topologyVersion() != topologyAfterGhosts_ ||
+        if (!ghostLayerKept_ || topologyBeforeHalo != topologyAfterGhosts_ ||
             !placeKeptGhosts(layer)) {
             buildGhostLayer(hMax, t);
             if (!placeKeptGhosts(layer))
@@ -291,10 +291,10 @@ void SphSolver<Dim>::addGhosts() {
         }
         placed = &keptGhosts_;
     }
-    particles_->addGhosts(placed->source, placed->map);
+    const std::size_t first = particles_->addGhosts(placed->source, placed->map);  // after the halo
     for (std::size_t k = 0; k < placed->size(); ++k) {
-        x_[owned + k] = placed->position[k];
-        v_[owned + k] = placed->velocity[k];
+        x_[first + k] = placed->position[k];
+        v_[first + k] = placed->velocity[k];
     }
     if (tau_) particles_->reflectTensorsToGhosts(*tau_);
     const std::size_t n = x_.size();
@@ -333,7 +333,7 @@ void SphSolver<Dim>::buildGhostLayer(double hMax, double t) {
 // one lacks.
 template <int Dim>
 bool SphSolver<Dim>::placeKeptGhosts(const GhostBlock<Dim>& layer) {
-    const std::size_t owned = particles_->ownedCount();
+    const std::size_t owned = x_.size();  // the owned particles and the halo (MPI): the images follow
     GhostBlock<Dim>& kept = keptGhosts_;
     ghostActive_.assign(owned + kept.size(), 1);
     std::size_t next = 0;
@@ -414,6 +414,12 @@ void SphSolver<Dim>::updateDecomposition() {
     decomposition_->migrate(*particles_, weights);
     haloWidth_ = rMax + skin_;
     decomposition_->planHalo(*particles_, haloWidth_);
+    // The halo's members and order change with the plan even when no owned particle moved: the
+    // candidate list and the kept mirror layer index them, and the conditions' selections index
+    // the owned particles.
+    if (verlet_) verlet_->invalidate();
+    ghostLayerKept_ = false;
+    boundaries_.updateSelections(*particles_);
     const std::size_t owned = particles_->ownedCount();
     xAtMigration_.assign(x_.begin(), x_.begin() + long(owned));
     // Per-particle scratch of the solver follows the new owned count (recomputed before use).
