@@ -1,6 +1,9 @@
 #pragma once
 #include "functionObjects/FunctionObject.hpp"
 
+#include <cstdint>
+#include <unordered_map>
+
 namespace mfdyn {
 
 class BodyForceSolver;
@@ -16,7 +19,8 @@ private:
     TrajectoryError(const KeywordValues& values, const std::string& name, const RunContext& context);
     const BodyForceSolver& solver_;
     double t0_;
-    std::vector<double> x0_, v0_;
+    std::vector<double> x0_, v0_;                          // at the start, Dim per particle
+    std::unordered_map<std::int64_t, std::size_t> start_;  // global id -> its place in x0_, v0_
     ErrorNormWriter norms_;
 };
 

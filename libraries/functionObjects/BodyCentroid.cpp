@@ -42,7 +42,8 @@ const char* axes[] = {"x", "y", "z"};
 
 KeywordSchema BodyCentroid::keywords() {
     return KeywordSchema("functionObject", "bodyCentroid")
-        .words("regions", "the bodies (particleGen regions) to measure, in this order (default: every region)")
+        .words("regions",
+               "the bodies (particleGen regions) to measure, in this order (default: every region)")
         .optional()
         .vector("up", "-", "against gravity: the axis of heights (default +y in 2D, +z in 3D, +x in 1D)")
         .optional()
@@ -58,14 +59,15 @@ BodyCentroid::BodyCentroid(const Dictionary& dict, const std::string& name, cons
     : BodyCentroid(keywords().read(dict), name, context) {}
 
 BodyCentroid::BodyCentroid(const KeywordValues& values, const std::string& name, const RunContext& context)
-    : FunctionObject(values, name, context), level_(values.optionalScalar("level")) {
+    : FunctionObject(values, name, context, ParticleScope::owned), level_(values.optionalScalar("level")) {
     const Dictionary& dict = values.dict();
     const int dim = context.dimension();
     requireField(dict, "type", "mass");
     requireField(dict, "type", "region");
     const std::vector<std::string> names = runRegionNames(context);
     if (values.given("regions")) {
-        for (const auto& r : values.words("regions")) bodies_.push_back({regionIndex(dict, "regions", r, context), r});
+        for (const auto& r : values.words("regions"))
+            bodies_.push_back({regionIndex(dict, "regions", r, context), r});
     } else {
         for (std::size_t r = 0; r < names.size(); ++r) bodies_.push_back({std::int64_t(r), names[r]});
         if (bodies_.empty()) throw dict.error("type", "bodyCentroid: this run's particles name no region");
@@ -74,8 +76,8 @@ BodyCentroid::BodyCentroid(const KeywordValues& values, const std::string& name,
     if (values.given("up")) {
         const auto& u = values.vector("up");
         if (int(u.size()) < dim)
-            throw dict.error("up", "expected " + std::to_string(dim) + " components, found " +
-                                       std::to_string(u.size()));
+            throw dict.error(
+                "up", "expected " + std::to_string(dim) + " components, found " + std::to_string(u.size()));
         double norm = 0;
         for (int k = 0; k < dim; ++k) norm += u[k] * u[k];
         if (!(norm > 0) || !std::isfinite(norm))
@@ -95,7 +97,7 @@ BodyCentroid::BodyCentroid(const KeywordValues& values, const std::string& name,
 void BodyCentroid::write() {
     const FieldStore& fields = context().fields();
     const int dim = fields.dimension();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase& x = fields.field("position");
     const FieldBase& m = fields.field("mass");
     const FieldBase& region = fields.field("region");
@@ -104,7 +106,8 @@ void BodyCentroid::write() {
         for (int d = 0; d < dim; ++d) s += x.component(i, d) * up_[d];
         return s;
     };
-    const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+    const double inf = std::numeric_limits<double>::infinity(),
+                 nan = std::numeric_limits<double>::quiet_NaN();
     time_ = context().time().value();
     std::vector<double> row{time_};
     for (Body& b : bodies_) {

@@ -31,9 +31,11 @@
 // l_d2 ... for the directions. With `reference` (one value per l_x l_y ..., modes bounds and
 // lines), the latest extents and their errors go into the summary beside the run time
 // (referenceValues l_x, l_y ...).
-// Extremes are global reductions (max, min), so an MPI build measures the whole body.
+// Extremes and sums are global reductions, and the ids of mode lines' row and column are those of
+// every rank, so an MPI build measures the whole body.
 #include "functionObjects/BodyExtents.hpp"
 
+#include "core/Communicator.hpp"
 #include "core/Dictionary.hpp"
 #include "core/Error.hpp"
 #include "core/Parallel.hpp"
@@ -43,6 +45,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 namespace mfdyn {
@@ -89,6 +92,23 @@ std::vector<std::array<double, 3>> readDirections(const Dictionary& dict, int di
     if (out.empty()) throw bad("the list is empty");
     return out;
 }
+
+// The ids of every rank together, sorted (collective).
+std::vector<std::int64_t> allRanksIds(const std::vector<std::int64_t>& mine) {
+    std::vector<std::int64_t> all = mine;
+    if (Communicator::distributed()) {
+        std::vector<char> bytes(mine.size() * sizeof(std::int64_t));
+        if (!bytes.empty()) std::memcpy(bytes.data(), mine.data(), bytes.size());
+        all.clear();
+        for (const auto& part : Communicator::allGatherVariable(bytes)) {
+            const std::size_t first = all.size();
+            all.resize(first + part.size() / sizeof(std::int64_t));
+            if (!part.empty()) std::memcpy(all.data() + first, part.data(), part.size());
+        }
+    }
+    std::sort(all.begin(), all.end());
+    return all;
+}
 }  // namespace
 
 KeywordSchema BodyExtents::keywords() {
@@ -120,7 +140,7 @@ BodyExtents::BodyExtents(const Dictionary& dict, const std::string& name, const 
     : BodyExtents(keywords().read(dict), name, context) {}
 
 BodyExtents::BodyExtents(const KeywordValues& values, const std::string& name, const RunContext& context)
-    : FunctionObject(values, name, context),
+    : FunctionObject(values, name, context, ParticleScope::owned),
       lines_(values.word("mode") == "lines"),
       radius_(values.word("mode") == "radius") {
     const Dictionary& dict = values.dict();
@@ -189,7 +209,7 @@ BodyExtents::BodyExtents(const KeywordValues& values, const std::string& name, c
 
 void BodyExtents::chooseLines() {
     const FieldStore& fields = context().fields();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase& x = fields.field("position");
     const FieldBase& gid = fields.field("globalId");
     const FieldBase* region = region_ >= 0 ? &fields.field("region") : nullptr;
@@ -228,15 +248,15 @@ void BodyExtents::chooseLines() {
         if (hi[1] - x.component(i, 1) <= tolerance[1]) row_.push_back(id);
         if (std::abs(x.component(i, 0) - chosen) <= tolerance[0]) column_.push_back(id);
     }
-    // (An MPI build would gather the ids of every rank here.)
-    std::sort(row_.begin(), row_.end());
-    std::sort(column_.begin(), column_.end());
+    // Every rank's, on every rank: a particle of the row may move to another rank later.
+    row_ = allRanksIds(row_);
+    column_ = allRanksIds(column_);
 }
 
 void BodyExtents::write() {
     const FieldStore& fields = context().fields();
     const int dim = fields.dimension();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase& x = fields.field("position");
     const FieldBase* region = region_ >= 0 ? &fields.field("region") : nullptr;
     const auto member = [&](std::size_t i) {
@@ -291,7 +311,7 @@ void BodyExtents::writeDirections(std::vector<double>& row) const {
     if (directions_.empty()) return;
     const FieldStore& fields = context().fields();
     const int dim = fields.dimension();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase& x = fields.field("position");
     const FieldBase* region = region_ >= 0 ? &fields.field("region") : nullptr;
     const double inf = std::numeric_limits<double>::infinity();
@@ -312,7 +332,7 @@ void BodyExtents::writeDirections(std::vector<double>& row) const {
 void BodyExtents::writeRadius(std::vector<double>& row) const {
     const FieldStore& fields = context().fields();
     const int dim = fields.dimension();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase& x = fields.field("position");
     const FieldBase* region = region_ >= 0 ? &fields.field("region") : nullptr;
     // The centre: given, or the centroid (mass-weighted where there are masses, like bodyCentroid).

@@ -37,7 +37,7 @@ BodyMomentum::BodyMomentum(const Dictionary& dict, const std::string& name, cons
     : BodyMomentum(keywords().read(dict), name, context) {}
 
 BodyMomentum::BodyMomentum(const KeywordValues& values, const std::string& name, const RunContext& context)
-    : FunctionObject(values, name, context) {
+    : FunctionObject(values, name, context, ParticleScope::owned) {
     const Dictionary& dict = values.dict();
     const int dim = context.dimension();
     regionNames_ = runRegionNames(context);
@@ -71,7 +71,7 @@ BodyMomentum::BodyMomentum(const KeywordValues& values, const std::string& name,
 std::vector<double> BodyMomentum::measure() const {
     const FieldStore& fields = context().fields();
     const int dim = fields.dimension();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase* massField = fields.findField("mass");
     const FieldBase& position = fields.field("position");
     const FieldBase* velocity = fields.findField("velocity");

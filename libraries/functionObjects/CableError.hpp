@@ -20,6 +20,9 @@ public:
     std::vector<std::string> summary() const override;
     // peakTipDisplacement: the largest |u_x| of the tip so far against the exact largest.
     std::vector<ReferenceValue> referenceValues() const override;
+    std::optional<std::vector<std::string>> fieldsRead() const override {
+        return std::vector<std::string>{positionField_, "position", "velocity"};
+    }
 
     // The tip particle's index now and its reference axial coordinate.
     std::size_t tipIndex() const { return tip_; }

@@ -28,6 +28,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -49,7 +50,8 @@ ConservedQuantities::ConservedQuantities(const Dictionary& dict, const std::stri
 
 ConservedQuantities::ConservedQuantities(const KeywordValues& values, const std::string& name,
                                          const RunContext& context)
-    : FunctionObject(values, name, context), maxGrowth_(values.optionalScalar("maxEnergyGrowth")) {
+    : FunctionObject(values, name, context, ParticleScope::owned),
+      maxGrowth_(values.optionalScalar("maxEnergyGrowth")) {
     const int dim = context.dimension();
     const char* axes[] = {"x", "y", "z"};
     columns_ = {"time", "mass"};
@@ -67,7 +69,7 @@ ConservedQuantities::ConservedQuantities(const KeywordValues& values, const std:
 std::vector<double> ConservedQuantities::measure() const {
     const FieldStore& fields = context().fields();
     const int dim = fields.dimension();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase* massField = fields.findField("mass");
     const FieldBase& position = fields.field("position");
     const FieldBase* velocity = fields.findField("velocity");
@@ -145,21 +147,38 @@ std::string ConservedQuantities::growthDiagnosis() const {
     const FieldBase* id = fields.findField("globalId");
     const FieldBase& position = fields.field("position");
     const int dim = fields.dimension();
-    std::size_t fastest = 0;
-    double vmax = -1;
-    for (std::size_t i = 0; velocity && i < fields.size(); ++i) {
-        double v2 = 0;
-        for (int d = 0; d < dim; ++d) v2 += velocity->component(i, d) * velocity->component(i, d);
-        if (!(v2 <= vmax * vmax) || vmax < 0) vmax = std::sqrt(v2), fastest = i;
-        if (!std::isfinite(v2)) break;
-    }
-    if (vmax >= 0) {
-        s << ".\n    Fastest particle: "
-          << (id ? "globalId " + std::to_string(std::int64_t(id->component(fastest, 0)))
-                 : "index " + std::to_string(fastest))
-          << " at (";
-        for (int d = 0; d < dim; ++d) s << (d ? " " : "") << position.component(fastest, d);
-        s << "), |v| = " << vmax;
+    const std::size_t n = context().ownedParticles();
+    if (velocity) {
+        // Over every rank, described by the rank that owns it, so that every rank throws the same
+        // text: a non-finite speed counts as the fastest, and of equals the lowest global id.
+        const auto speedSquared = [&](std::size_t i) {
+            double v2 = 0;
+            for (int d = 0; d < dim; ++d) v2 += velocity->component(i, d) * velocity->component(i, d);
+            return v2;
+        };
+        const auto rankOf = [&](std::size_t i) {
+            const double v2 = speedSquared(i);
+            return std::isfinite(v2) ? std::sqrt(v2) : std::numeric_limits<double>::infinity();
+        };
+        const auto key = [&](std::size_t i) {
+            return id ? std::int64_t(id->component(i, 0)) : std::int64_t(i);
+        };
+        const double fastest = GlobalReduce::max(n, rankOf);
+        std::size_t chosen = n;
+        for (std::size_t i = 0; i < n; ++i)
+            if (rankOf(i) == fastest && (chosen == n || key(i) < key(chosen))) chosen = i;
+        std::string text;
+        if (chosen < n) {
+            std::ostringstream d;
+            d.precision(4);
+            d << (id ? "globalId " : "index ") << key(chosen) << " at (";
+            for (int k = 0; k < dim; ++k) d << (k ? " " : "") << position.component(chosen, k);
+            d << "), |v| = " << std::sqrt(speedSquared(chosen));
+            text = d.str();
+        }
+        const std::string described =
+            GlobalReduce::firstMessage(chosen < n ? key(chosen) : noMessageKey, text);
+        if (!described.empty()) s << ".\n    Fastest particle: " << described;
     }
     s << ".\n    With no energy put in, growth is a numerical instability of the scheme: reduce maxCo "
          "(system/controlDict) or the fixed deltaT, raise the method's dissipation, and see where the "

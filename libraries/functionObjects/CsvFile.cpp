@@ -1,5 +1,6 @@
 #include "functionObjects/CsvFile.hpp"
 
+#include "core/Communicator.hpp"
 #include "core/Error.hpp"
 #include "core/Log.hpp"
 
@@ -46,13 +47,14 @@ CsvFile::CsvFile(const fs::path& file, const std::vector<std::string>& columns, 
     : path_(file),
       columns_(columns.size()),
       series_(!columns.empty() && columns[0] == "time"),
-      startTime_(startTime) {
+      startTime_(startTime),
+      writer_(Communicator::rank() == 0) {
     for (std::size_t k = 0; k < columns.size(); ++k) header_ += (k ? "," : "") + columns[k];
 }
 
 CsvFile::~CsvFile() {
     // Not while an exception unwinds: a failed write must not leave a header-only file behind.
-    if (opened_ || series_ || std::uncaught_exceptions() > 0) return;
+    if (!writer_ || opened_ || series_ || std::uncaught_exceptions() > 0) return;
     try {
         open(startTime_);
     } catch (const std::exception& e) {
@@ -153,12 +155,14 @@ void CsvFile::openSeries(double cutoff) {
 }
 
 void CsvFile::row(const std::vector<double>& values) {
+    if (!writer_) return;
     if (!opened_) open(values.empty() ? startTime_ : values[0]);
     for (std::size_t k = 0; k < values.size(); ++k) out_ << (k ? "," : "") << number(values[k]);
     out_ << std::endl;
 }
 
 void CsvFile::row(double time, const std::string& label, const std::vector<double>& values) {
+    if (!writer_) return;
     if (!opened_) open(time);
     out_ << number(time) << "," << label;
     for (double v : values) out_ << "," << number(v);

@@ -14,6 +14,9 @@
 // (columns changed) is moved there instead, never mixed. A row cut off by a killed run (no
 // newline) is dropped. Any other file (a profile at one time, a sampled line) is a table,
 // written whole.
+//
+// Under mpirun only rank 0 writes: every rank makes the same calls with the same values (global
+// reductions), and one writer keeps the file whole. The other ranks' calls do nothing.
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -49,6 +52,7 @@ private:
     double startTime_;
     std::ofstream out_;
     bool opened_ = false;
+    bool writer_;  // this process writes the file: rank 0
 };
 
 }  // namespace mfdyn

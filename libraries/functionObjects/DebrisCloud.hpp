@@ -11,6 +11,9 @@ public:
     static KeywordSchema keywords();
     void write() override;
     std::vector<std::string> summary() const override { return summary_; }
+    std::optional<std::vector<std::string>> fieldsRead() const override {
+        return std::vector<std::string>{"position"};
+    }
 
 private:
     DebrisCloud(const KeywordValues& values, const std::string& name, const RunContext& context);

@@ -65,7 +65,7 @@ EllipticalDropError::EllipticalDropError(const Dictionary& dict, const std::stri
 
 EllipticalDropError::EllipticalDropError(const KeywordValues& values, const std::string& name,
                                          const RunContext& context)
-    : FunctionObject(values, name, context),
+    : FunctionObject(values, name, context, ParticleScope::owned),
       exact_(values.scalar("A0")),
       radius_(values.optionalScalar("radius").value_or(0.0)),
       norms_(outputFile("errorNorms.csv"), name, startTime()) {
@@ -88,7 +88,7 @@ void EllipticalDropError::write() {
     const FieldStore& fields = context().fields();
     // No return on a rank with no particles: the moments below are global sums every rank must
     // reach; the row is skipped only when no rank has a particle.
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const double t = context().time().value();
     const FieldBase& position = fields.field("position");
     const FieldBase& mass = fields.field("mass");

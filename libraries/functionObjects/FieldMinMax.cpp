@@ -43,7 +43,7 @@ FieldMinMax::FieldMinMax(const Dictionary& dict, const std::string& name, const 
     : FieldMinMax(keywords().read(dict), name, context) {}
 
 FieldMinMax::FieldMinMax(const KeywordValues& values, const std::string& name, const RunContext& context)
-    : FunctionObject(values, name, context) {
+    : FunctionObject(values, name, context, ParticleScope::owned) {
     const Dictionary& dict = values.dict();
     fields_ = values.words("fields");
     components_ = values.word("mode") == "component";
@@ -81,6 +81,8 @@ bool FieldMinMax::derived(const std::string& field) const {
 void FieldMinMax::write() {
     const FieldStore& store = context().fields();
     const FieldBase& ids = store.field("globalId");
+    const std::size_t n = context().ownedParticles();
+    const bool any = globalSum(double(n)) > 0;
     std::vector<double> row{context().time().value()};
     for (const auto& name : fields_) {
         const bool isDerived = derived(name);
@@ -108,17 +110,23 @@ void FieldMinMax::write() {
                 for (int c = 0; c < nc; ++c) s += f->component(i, c) * f->component(i, c);
                 return std::sqrt(s);
             };
-            // Sequential on purpose: ties resolve to the lowest index whatever the thread count.
-            double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-            std::size_t iLo = 0, iHi = 0;
-            for (std::size_t i = 0; i < store.size(); ++i) {
-                const double v = value(i);
-                if (v < lo) lo = v, iLo = i;
-                if (v > hi) hi = v, iHi = i;
-            }
-            const bool any = store.size() > 0;
-            row.insert(row.end(), {any ? lo : NAN, any ? ids.component(iLo, 0) : -1, any ? hi : NAN,
-                                   any ? ids.component(iHi, 0) : -1});
+            // Over every rank: the extreme, then the lowest global id that holds it (the serial
+            // run's first index with it when its particles are in id order, as particleGen writes
+            // them), so any number of ranks and threads gives the same row. NaN values are passed
+            // over (the min and max reductions ignore them).
+            std::vector<double> values(n);
+            for (std::size_t i = 0; i < n; ++i) values[i] = value(i);
+            const double lo = GlobalReduce::min(n, [&](std::size_t i) { return values[i]; });
+            const double hi = GlobalReduce::max(n, [&](std::size_t i) { return values[i]; });
+            const auto lowestIdAt = [&](double extreme) {
+                const double id = GlobalReduce::min(n, [&](std::size_t i) {
+                    return values[i] == extreme ? ids.component(i, 0)
+                                                : std::numeric_limits<double>::infinity();
+                });
+                return std::isfinite(id) ? id : -1.0;
+            };
+            const double idLo = lowestIdAt(lo), idHi = lowestIdAt(hi);
+            row.insert(row.end(), {any ? lo : NAN, any ? idLo : -1, any ? hi : NAN, any ? idHi : -1});
         }
     }
     csv_->row(row);

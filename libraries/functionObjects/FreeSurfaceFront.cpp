@@ -65,7 +65,7 @@ void unitVector(const KeywordValues& values, const char* key, int dim, double* o
 
 FreeSurfaceFront::FreeSurfaceFront(const KeywordValues& values, const std::string& name,
                                    const RunContext& context)
-    : FunctionObject(values, name, context), band_(values.scalar("wallBand")) {
+    : FunctionObject(values, name, context, ParticleScope::owned), band_(values.scalar("wallBand")) {
     const Dictionary& dict = values.dict();
     const int dim = context.dimension();
     if (dim < 2) throw dict.error("type", "freeSurfaceFront needs a 2D or 3D run (a front and a height)");
@@ -91,7 +91,7 @@ FreeSurfaceFront::FreeSurfaceFront(const KeywordValues& values, const std::strin
 void FreeSurfaceFront::write() {
     const FieldStore& fields = context().fields();
     const int dim = fields.dimension();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase& x = fields.field("position");
     const FieldBase& m = fields.field("mass");
     const FieldBase* region = region_ >= 0 ? &fields.field("region") : nullptr;

@@ -1,10 +1,13 @@
 #include "functionObjects/FunctionObject.hpp"
 
+#include "core/Communicator.hpp"
+#include "functionObjects/GatheredParticles.hpp"
 #include "functionObjects/Health.hpp"
 
 #include <cmath>
 #include <cstdio>
 #include <optional>
+#include <set>
 #include <tuple>
 
 #include <sys/resource.h>
@@ -38,12 +41,14 @@ double processCpuSeconds() {
            double(usage.ru_stime.tv_sec) + 1e-6 * double(usage.ru_stime.tv_usec);
 }
 
-FunctionObject::FunctionObject(const Dictionary& dict, const std::string& name, const RunContext& context)
-    : FunctionObject(functionObjectKeywords().read(dict), name, context) {}
+FunctionObject::FunctionObject(const Dictionary& dict, const std::string& name, const RunContext& context,
+                               ParticleScope scope)
+    : FunctionObject(functionObjectKeywords().read(dict), name, context, scope) {}
 
 FunctionObject::FunctionObject(const KeywordValues& values, const std::string& name,
-                               const RunContext& context)
-    : name_(name), context_(context), startTime_(context.time().value()) {
+                               const RunContext& context, ParticleScope scope)
+    : name_(name), context_(context), scope_(scope), startTime_(context.time().value()) {
+    if (const auto* own = dynamic_cast<const FunctionObjectContext*>(&context)) own->show(scope);
     const std::string& control = values.word("writeControl");
     const std::optional<double> interval = values.optionalScalar("writeInterval");
     if (control == "timeStep") {
@@ -91,7 +96,10 @@ bool FunctionObject::due(bool solverWrites) {
 
 void FunctionObject::execute(bool solverWrites) {
     check();
-    if (!due(solverWrites)) return;
+    if (due(solverWrites)) writeStamped();
+}
+
+void FunctionObject::writeStamped() {
     write();
     // After the write: the CPU time the error it measured had cost, the write's own included.
     lastWrite_ = {context_.time().timeIndex(), context_.time().value(), processCpuSeconds()};
@@ -133,6 +141,33 @@ void ErrorNormWriter::add(double time, const std::string& field, double L1, doub
 }
 
 FunctionObjectList::FunctionObjectList(const Dictionary& controlDict, const RunContext& context) {
+    // Several ranks: each object gets a context of its own, which shows the particles of the
+    // scope it states (FunctionObject.hpp); one process: the run's own, no copy.
+    if (Communicator::distributed()) gathered_ = std::make_unique<GatheredParticles>(context);
+    const auto contextFor = [&]() -> const RunContext& {
+        if (!gathered_) return context;
+        contexts_.push_back(std::make_unique<FunctionObjectContext>(context, *gathered_));
+        return *contexts_.back();
+    };
+    constructObjects(controlDict, contextFor);
+    if (!gathered_) return;
+    // What the objects of scope all read, together: only that is gathered from now on.
+    std::optional<std::set<std::string>> read = std::set<std::string>{};
+    for (const auto& object : objects_) {
+        if (!object->readsAllParticles()) continue;
+        const auto fields = object->fieldsRead();
+        if (!fields)
+            read.reset();
+        else if (read)
+            read->insert(fields->begin(), fields->end());
+    }
+    gathered_->select(read);
+}
+
+FunctionObjectList::~FunctionObjectList() = default;
+
+void FunctionObjectList::constructObjects(const Dictionary& controlDict,
+                                          const std::function<const RunContext&()>& contextFor) {
     const Dictionary* functions = controlDict.findDict("functions");
     bool healthListed = false;
     if (functions)
@@ -143,29 +178,43 @@ FunctionObjectList::FunctionObjectList(const Dictionary& controlDict, const RunC
     // First: a state it stops on is never seen (and written into a CSV) by the objects after it.
     if (controlDict.findDict("health")) {
         if (healthListed)
-            throw controlDict.error("health", "the health check is set twice: here and as a function object "
-                                              "of type health in `functions`; keep one");
-        objects_.push_back(std::make_unique<Health>(controlDict.subDict("health"), "health", context));
+            throw controlDict.error("health",
+                                    "the health check is set twice: here and as a function object "
+                                    "of type health in `functions`; keep one");
+        objects_.push_back(std::make_unique<Health>(controlDict.subDict("health"), "health", contextFor()));
     } else if (!healthListed && controlDict.getOrDefault<bool>("health", true)) {
         const Dictionary defaults;  // every keyword at its default (read in the constructor, not kept)
-        objects_.push_back(std::make_unique<Health>(defaults, "health", context));
+        objects_.push_back(std::make_unique<Health>(defaults, "health", contextFor()));
     }
     if (!functions) return;
     for (const auto& entry : functions->entries()) {
         if (!entry->isDict())
             throw functions->error(
                 entry->key, "expected a dictionary { type ...; } for function object '" + entry->key + "'");
-        objects_.push_back(FunctionObject::New(functions->subDict(entry->key), entry->key, context));
+        objects_.push_back(FunctionObject::New(functions->subDict(entry->key), entry->key, contextFor()));
     }
 }
 
 void FunctionObjectList::execute(bool solverWrites) {
-    for (auto& object : objects_) object->execute(solverWrites);
+    // The copy is gathered once per call, before the first write of an object of scope all, and
+    // not at all at a call without one. Collective: whether an object is due depends on the time
+    // alone, and the checks that throw (health) throw on every rank together.
+    bool gathered = false;
+    for (auto& object : objects_) {
+        object->check();
+        if (!object->due(solverWrites)) continue;
+        if (gathered_ && object->readsAllParticles() && !gathered) {
+            gathered_->refresh();
+            gathered = true;
+        }
+        object->writeStamped();
+    }
 }
 
 std::string FunctionObjectList::stopRequest() const {
     for (const auto& object : objects_)
-        if (object->stopRequested()) return "function object '" + object->name() + "' (" + object->stopReason() + ")";
+        if (object->stopRequested())
+            return "function object '" + object->name() + "' (" + object->stopReason() + ")";
     return {};
 }
 

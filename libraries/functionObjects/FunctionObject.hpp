@@ -14,18 +14,32 @@
 // summary prints both in one fixed format, with the step, time and process CPU time of the write
 // that measured them (SolverRun: "error <name>  <value> (exact <x>, relative <r>) at CPU ..."),
 // which mfStudy reads.
+//
+// On several ranks (MPI) each rank holds only its own particles. An object says in its base
+// constructor which particles its context shows it (ParticleScope): by default `all`, every
+// rank's owned particles gathered in global-id order on every rank, so an object written for one
+// process needs no MPI code and gives the serial answer; `owned`, this rank's own, for an object
+// that makes every figure a global reduction (GlobalReduce, globalMax...) and so sees each
+// particle once over the ranks. FunctionObjectList gathers the copy (GatheredParticles.hpp) at
+// the calls where an object of scope `all` writes; on one process there is no copy and both
+// scopes show the run's own particles.
 #include "core/Registry.hpp"
 #include "functionObjects/CsvFile.hpp"
 #include "functionObjects/RunContext.hpp"
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace mfdyn {
+
+class FunctionObjectContext;
+class GatheredParticles;
 
 // writeControl and writeInterval, appended to every function object's schema.
 KeywordSchema functionObjectKeywords();
@@ -55,6 +69,12 @@ struct ReferenceValue {
 // User + system CPU time of this process so far, all threads (getrusage).
 double processCpuSeconds();
 
+// Which particles a function object's context shows on several ranks (above).
+enum class ParticleScope {
+    all,   // every rank's owned particles, the same copy on every rank
+    owned  // this rank's owned particles: every figure is a global reduction
+};
+
 class FunctionObject {
 public:
     static constexpr const char* familyName = "functionObject";
@@ -64,19 +84,31 @@ public:
         return Selector::New(dict, name, context);
     }
 
-    // From the values of the type's schema, which appends functionObjectKeywords().
-    FunctionObject(const KeywordValues& values, const std::string& name, const RunContext& context);
+    // From the values of the type's schema, which appends functionObjectKeywords(). `scope` is
+    // stated here, in the base constructor, because the derived constructor already reads the
+    // particles (selections, a tip chosen by position) through the context it was handed: the
+    // list's per-object context takes the scope before that (FunctionObjectContext).
+    FunctionObject(const KeywordValues& values, const std::string& name, const RunContext& context,
+                   ParticleScope scope = ParticleScope::all);
     // For a type without a schema of its own (a user's library): reads functionObjectKeywords().
-    FunctionObject(const Dictionary& dict, const std::string& name, const RunContext& context);
+    FunctionObject(const Dictionary& dict, const std::string& name, const RunContext& context,
+                   ParticleScope scope = ParticleScope::all);
     virtual ~FunctionObject();
 
     const std::string& name() const { return name_; }
+    // Whether this object reads every rank's particles (scope all): the list gathers them before
+    // the calls at which it writes.
+    bool readsAllParticles() const { return scope_ == ParticleScope::all; }
+    // The particle fields an object of scope all reads, asked once after construction: only these
+    // (and globalId, region) are gathered at its writes. nullopt: every field of the run.
+    virtual std::optional<std::vector<std::string>> fieldsRead() const { return std::nullopt; }
     // Whether this step is one of this object's write times (`solverWrites`: the solver writes now).
     bool due(bool solverWrites);
     virtual void write() = 0;
     // Called after every step before due(): a check that must not wait for a write (health).
     virtual void check() {}
     // check(), due(), then write() and the stamp of that write (step, time, process CPU time).
+    // (FunctionObjectList runs the same steps for all its objects, gathering in between.)
     void execute(bool solverWrites);
     virtual std::vector<ErrorNorm> errorNorms() const { return {}; }
     // Values compared with an exact one, as of the latest write (empty: none).
@@ -107,8 +139,13 @@ protected:
                                   const std::string& name) const;
 
 private:
+    friend class FunctionObjectList;
+    // write() and its stamp.
+    void writeStamped();
+
     std::string name_;
     const RunContext& context_;
+    ParticleScope scope_;
     double startTime_;
     enum class Control { timeStep, runTime, writeTime } control_;
     double interval_;
@@ -139,6 +176,7 @@ public:
     // controlDict's `health { ... }` gives its settings, `health off;` leaves it out, and a
     // `functions` entry of type health replaces it.
     FunctionObjectList(const Dictionary& controlDict, const RunContext& context);
+    ~FunctionObjectList();
     // Called after every step (and once at the start).
     void execute(bool solverWrites);
     std::vector<ErrorNorm> errorNorms() const;
@@ -154,8 +192,18 @@ public:
         FunctionObject::WriteStamp measured;
     };
     std::vector<ErrorRecord> errorRecords() const;
+    // Several ranks: the particles gathered for the objects of scope all (null on one process);
+    // for tests.
+    const GatheredParticles* gathered() const { return gathered_.get(); }
 
 private:
+    // controlDict's objects in order, each constructed with contextFor().
+    void constructObjects(const Dictionary& controlDict,
+                          const std::function<const RunContext&()>& contextFor);
+
+    // Several ranks only. Declared before the objects, which refer to them: destroyed after.
+    std::unique_ptr<GatheredParticles> gathered_;
+    std::vector<std::unique_ptr<FunctionObjectContext>> contexts_;  // one per object
     std::vector<std::unique_ptr<FunctionObject>> objects_;
 };
 

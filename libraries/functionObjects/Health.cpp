@@ -61,8 +61,9 @@ KeywordSchema Health::keywords() {
         .orDefault(1e-4)
         .atLeast(0)
         .lessThan(1)
-        .scalar("maxEnergyImbalance", "-",
-                "stop when |energy imbalance| exceeds this fraction of the largest energy seen (off without it)")
+        .scalar(
+            "maxEnergyImbalance", "-",
+            "stop when |energy imbalance| exceeds this fraction of the largest energy seen (off without it)")
         .greaterThan(0)
         .optional()
         .vector("domainMin", "m", "lower corner of the box the particles must stay in (with domainMax)")
@@ -85,7 +86,7 @@ Health::Health(const Dictionary& dict, const std::string& name, const RunContext
     : Health(keywords().read(dict), name, context) {}
 
 Health::Health(const KeywordValues& values, const std::string& name, const RunContext& context)
-    : FunctionObject(values, name, context),
+    : FunctionObject(values, name, context, ParticleScope::owned),
       checkInterval_(values.integer("checkInterval")),
       minTimeStepFraction_(values.scalar("minTimeStepFraction")),
       maxEnergyImbalance_(values.optionalScalar("maxEnergyImbalance")),
@@ -101,7 +102,8 @@ Health::Health(const KeywordValues& values, const std::string& name, const RunCo
         for (const auto& [key, v] : {std::pair{"domainMin", &a}, std::pair{"domainMax", &b}})
             if (int(v->size()) != dim)
                 throw values.error(key, "expected " + std::to_string(dim) + " components (a " +
-                                            std::to_string(dim) + "D run), found " + std::to_string(v->size()));
+                                            std::to_string(dim) + "D run), found " +
+                                            std::to_string(v->size()));
         DomainBox box;
         for (int d = 0; d < dim; ++d) {
             if (!(a[d] < b[d]))
@@ -142,7 +144,8 @@ std::string Health::describeParticle(std::int64_t id) const {
         s += ")";
         if (velocity) {
             double speed = 0;
-            for (int d = 0; d < velocity->components(); ++d) speed += velocity->component(i, d) * velocity->component(i, d);
+            for (int d = 0; d < velocity->components(); ++d)
+                speed += velocity->component(i, d) * velocity->component(i, d);
             s += ", speed " + number(std::sqrt(speed));
         }
         return s;
@@ -168,7 +171,8 @@ void Health::checkFinite() const {
             for (std::size_t k = 0; k < m; ++k) nonFinite |= unsigned(!(v[k] - v[k] == 0.0));
             local += double(nonFinite);
         } else {
-            local += LocalReduce::sum<double>(m, [v](std::size_t k) { return std::isfinite(v[k]) ? 0.0 : 1.0; });
+            local +=
+                LocalReduce::sum<double>(m, [v](std::size_t k) { return std::isfinite(v[k]) ? 0.0 : 1.0; });
         }
     }
     if (globalSum(local) == 0) return;
@@ -199,11 +203,13 @@ void Health::checkFinite() const {
                         number(v);
             }
         }
-        text += " (" + number(count, "%.0f") + " particle" + (count > 1 ? "s" : "") + " with non-finite values)";
+        text +=
+            " (" + number(count, "%.0f") + " particle" + (count > 1 ? "s" : "") + " with non-finite values)";
     }
     const Time& time = context().time();
-    throw RunError("health check, phase end of step " + std::to_string(time.timeIndex()) + ", t = " +
-                   time.timeName() + ": non-finite values: " + GlobalReduce::firstMessage(key, std::move(text)) +
+    throw RunError("health check, phase end of step " + std::to_string(time.timeIndex()) +
+                   ", t = " + time.timeName() +
+                   ": non-finite values: " + GlobalReduce::firstMessage(key, std::move(text)) +
                    ". The solver's own checks did not catch it. Remedy: look at that particle's "
                    "neighbourhood in the state written below; lower maxCo (or deltaT); check the "
                    "materials' constants and the boundary conditions acting there");
@@ -228,15 +234,16 @@ void Health::checkTimeStep() {
         const FieldBase& ids = context().fields().field("globalId");
         const std::size_t n = context().ownedParticles();
         bool owned = false;
-        for (std::size_t i = 0; i < n && !owned; ++i) owned = std::int64_t(ids.component(i, 0)) == vote.particle;
+        for (std::size_t i = 0; i < n && !owned; ++i)
+            owned = std::int64_t(ids.component(i, 0)) == vote.particle;
         who = GlobalReduce::firstMessage(owned ? vote.particle : noMessageKey,
                                          owned ? describeParticle(vote.particle) : std::string());
     }
     throw RunError("health check, phase time-step vote before step " + std::to_string(time.timeIndex() + 1) +
                    ", t = " + time.timeName() + ": the stable time step collapsed to " + number(vote.deltaT) +
                    " s, " + number(ratio, "%.3g") + " of its first value " + number(firstVote_) +
-                   " s (below minTimeStepFraction " + number(minTimeStepFraction_) + "); the limit: " +
-                   vote.reason + (who.empty() ? "" : ", " + who) +
+                   " s (below minTimeStepFraction " + number(minTimeStepFraction_) +
+                   "); the limit: " + vote.reason + (who.empty() ? "" : ", " + who) +
                    ". Remedy: look at that particle in the state written below (a runaway speed, an "
                    "inverted or crushed neighbourhood); refine or lower the load; or set "
                    "health { minTimeStepFraction 0; } in system/controlDict to let the run go on");
@@ -263,8 +270,9 @@ void Health::checkDomain() {
     if (count == 0) return;
     if (!stopOnLeaving_) {
         if (before == 0)
-            Log::warning("health: " + number(count, "%.0f") + " particles outside the domain (" + domainSource_ +
-                         ") at t = " + context().time().timeName() + " (onLeaving warn: the run goes on)");
+            Log::warning("health: " + number(count, "%.0f") + " particles outside the domain (" +
+                         domainSource_ + ") at t = " + context().time().timeName() +
+                         " (onLeaving warn: the run goes on)");
         return;
     }
     const FieldBase& ids = fields.field("globalId");
@@ -283,10 +291,11 @@ void Health::checkDomain() {
     for (int d = 0; d < dim; ++d) corners += (d ? " " : "") + number(box.max[d]);
     corners += ")";
     const Time& time = context().time();
-    throw RunError("health check, phase end of step " + std::to_string(time.timeIndex()) + ", t = " +
-                   time.timeName() + ": " + GlobalReduce::firstMessage(key, std::move(text)) +
+    throw RunError("health check, phase end of step " + std::to_string(time.timeIndex()) +
+                   ", t = " + time.timeName() + ": " + GlobalReduce::firstMessage(key, std::move(text)) +
                    " left the domain " + corners + " (" + domainSource_ + "; " + number(count, "%.0f") +
-                   " particle" + (count > 1 ? "s" : "") + " outside). Remedy: enlarge the domain, look "
+                   " particle" + (count > 1 ? "s" : "") +
+                   " outside). Remedy: enlarge the domain, look "
                    "for what drove the particle out (a runaway speed, a missing wall), or set "
                    "health { onLeaving warn; } in system/controlDict to count such particles and go on");
 }
@@ -297,7 +306,8 @@ Health::Budget Health::measureBudget() const {
     const FieldBase* mass = fields.findField("mass");
     const FieldBase* velocity = fields.findField("velocity");
     Budget b;
-    const std::optional<double> internal = context().internalEnergy(), potential = context().potentialEnergy(),
+    const std::optional<double> internal = context().internalEnergy(),
+                                potential = context().potentialEnergy(),
                                 dissipated = context().schemeDissipation(), work = context().externalWork();
     b.hasInternal = internal.has_value();
     b.hasPotential = potential.has_value();
@@ -306,7 +316,8 @@ Health::Budget Health::measureBudget() const {
     if (velocity)
         b.kinetic = GlobalReduce::sum<double>(n, [&](std::size_t i) {
             double v2 = 0;
-            for (int d = 0; d < velocity->components(); ++d) v2 += velocity->component(i, d) * velocity->component(i, d);
+            for (int d = 0; d < velocity->components(); ++d)
+                v2 += velocity->component(i, d) * velocity->component(i, d);
             return 0.5 * (mass ? mass->component(i, 0) : 1.0) * v2;
         });
     // Each hook once: tlSph's internal energy evaluates the law at every particle.
@@ -330,7 +341,8 @@ void Health::write() {
     largestImbalance_ = std::max(largestImbalance_, std::abs(lastImbalance_));
     const std::vector<HealthIndicator> indicators = context().healthIndicators();
     if (!csv_) {
-        std::vector<std::string> columns{"time", "step", "stableDeltaT", "stableDeltaTRatio", "kineticEnergy"};
+        std::vector<std::string> columns{"time", "step", "stableDeltaT", "stableDeltaTRatio",
+                                         "kineticEnergy"};
         if (b.hasInternal) columns.push_back("internalEnergy");
         if (b.hasPotential) columns.push_back("potentialEnergy");
         if (b.hasDissipated) columns.push_back("dissipated");
@@ -367,18 +379,19 @@ void Health::write() {
         if (found->count > 0 && warnedIndicators_.insert(found->name).second)
             Log::warning("health: " + std::to_string(found->count) + " particles past the " + found->name +
                          " threshold at t = " + time.timeName() + " (worst: particle " +
-                         std::to_string(found->worst) + ", value " + number(found->value) + "): " +
-                         found->definition);
+                         std::to_string(found->worst) + ", value " + number(found->value) +
+                         "): " + found->definition);
     }
     csv_->row(row);
     seconds_ += watch.seconds();
     if (maxEnergyImbalance_ && std::abs(lastImbalance_) > *maxEnergyImbalance_)
-        throw RunError("health check, phase end of step " + std::to_string(time.timeIndex()) + ", t = " +
-                       time.timeName() + ": the energy imbalance is " + number(100 * lastImbalance_, "%+.3g") +
-                       "% of the largest energy " + number(energyScale_) + " (maxEnergyImbalance " +
-                       number(*maxEnergyImbalance_) + "): kinetic " + number(b.kinetic) + ", internal " +
-                       number(b.internal) + ", potential " + number(b.potential) + ", dissipated " +
-                       number(b.dissipated) + ", external work " + number(b.work) +
+        throw RunError("health check, phase end of step " + std::to_string(time.timeIndex()) +
+                       ", t = " + time.timeName() + ": the energy imbalance is " +
+                       number(100 * lastImbalance_, "%+.3g") + "% of the largest energy " +
+                       number(energyScale_) + " (maxEnergyImbalance " + number(*maxEnergyImbalance_) +
+                       "): kinetic " + number(b.kinetic) + ", internal " + number(b.internal) +
+                       ", potential " + number(b.potential) + ", dissipated " + number(b.dissipated) +
+                       ", external work " + number(b.work) +
                        ". Remedy: a growth is an instability (lower maxCo, more stabilisation); a loss "
                        "is the scheme's dissipation or unmeasured work (see health.csv)");
 }
@@ -389,7 +402,8 @@ std::vector<std::string> Health::summary() const {
       << number(100 * largestImbalance_, "%.3g") << "%) of " << number(energyScale_);
     std::string unmeasured;
     if (first_ && !first_->hasDissipated) unmeasured += "the scheme's dissipation";
-    if (first_ && !first_->hasWork) unmeasured += std::string(unmeasured.empty() ? "" : " and ") + "external work";
+    if (first_ && !first_->hasWork)
+        unmeasured += std::string(unmeasured.empty() ? "" : " and ") + "external work";
     if (!unmeasured.empty()) s << " (includes " << unmeasured << ": not measured)";
     s << "; stable time step down to " << number(smallestVoteRatio_, "%.3g") << " of its first";
     if (!smallestVoteReason_.empty() && smallestVoteRatio_ < 1) s << " (" << smallestVoteReason_ << ")";

@@ -69,7 +69,7 @@ HydrostaticPressure::HydrostaticPressure(const Dictionary& dict, const std::stri
 
 HydrostaticPressure::HydrostaticPressure(const KeywordValues& values, const std::string& name,
                                          const RunContext& context)
-    : FunctionObject(values, name, context),
+    : FunctionObject(values, name, context, ParticleScope::owned),
       rho_(values.scalar("rho")),
       g_(values.scalar("g")),
       freeSurface_(values.optionalScalar("freeSurface")),
@@ -100,21 +100,23 @@ HydrostaticPressure::HydrostaticPressure(const KeywordValues& values, const std:
                          "neither (every particle)");
     if (values.given("point")) {
         const auto& p = values.vector("point");
-        if (int(p.size()) != dim) throw dict.error("point", "expected " + std::to_string(dim) + " components");
+        if (int(p.size()) != dim)
+            throw dict.error("point", "expected " + std::to_string(dim) + " components");
         for (int d = 0; d < dim; ++d) point_[d] = p[d];
         halfWidth_ = values.scalar("halfWidth");
         line_ = true;
     }
     profile_ = std::make_unique<CsvFile>(
         outputFile("profile.csv"),
-        std::vector<std::string>{"time", "height", "pressure", "exact", "relativeError", "particles"}, startTime());
+        std::vector<std::string>{"time", "height", "pressure", "exact", "relativeError", "particles"},
+        startTime());
     norms_ = std::make_unique<ErrorNormWriter>(outputFile("errorNorms.csv"), name, startTime());
 }
 
 void HydrostaticPressure::write() {
     const FieldStore& fields = context().fields();
     const int dim = fields.dimension();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase& x = fields.field("position");
     const FieldBase& p = fields.field("pressure");
     const FieldBase* region = region_ >= 0 ? &fields.field("region") : nullptr;
@@ -178,7 +180,9 @@ void HydrostaticPressure::write() {
     norms_->add(time_, "pressure", L1 / k, std::sqrt(L2 / k), Linf, e1 / k, std::sqrt(e2 / k), eInf);
 }
 
-std::vector<ErrorNorm> HydrostaticPressure::errorNorms() const { return norms_->latest(); }
+std::vector<ErrorNorm> HydrostaticPressure::errorNorms() const {
+    return norms_->latest();
+}
 
 std::vector<ReferenceValue> HydrostaticPressure::referenceValues() const {
     if (binsUsed_ == 0) return {};
@@ -189,16 +193,17 @@ std::vector<std::string> HydrostaticPressure::summary() const {
     if (writes_ == 0) return {};
     char s[320];
     if (binsUsed_ == 0) {
-        std::snprintf(s, sizeof s,
-                      "hydrostaticPressure '%s': at t = %.6g no particle below H - surfaceBand = %.6g (H %.6g)",
-                      name().c_str(), time_, height_ - surfaceBand_, height_);
+        std::snprintf(
+            s, sizeof s,
+            "hydrostaticPressure '%s': at t = %.6g no particle below H - surfaceBand = %.6g (H %.6g)",
+            name().c_str(), time_, height_ - surfaceBand_, height_);
         return {s};
     }
     std::snprintf(s, sizeof s,
                   "hydrostaticPressure '%s': at t = %.6g, H = %.6g, the largest relative error %.3g%% at h = "
                   "%.6g (p %.6g against rho g (H - h) = %.6g) over %zu bins below H - %.6g",
-                  name().c_str(), time_, height_, 100 * worstRelative_, worstHeight_, worstPressure_, worstExact_,
-                  binsUsed_, surfaceBand_);
+                  name().c_str(), time_, height_, 100 * worstRelative_, worstHeight_, worstPressure_,
+                  worstExact_, binsUsed_, surfaceBand_);
     return {s};
 }
 

@@ -94,6 +94,12 @@ KeywordSchema Interpolation::keywords(const std::string& defaultPositionField, M
         .orDefault(defaultPositionField);
 }
 
+std::vector<std::string> Interpolation::fieldsRead() const {
+    std::vector<std::string> fields{positionField_, "mass", "density", "volume"};
+    if (!hKeyword_) fields.push_back("smoothingLength");
+    return fields;
+}
+
 Interpolation::Interpolation(const Dictionary& dict, const FieldStore& particles,
                              const std::string& defaultPositionField, Method defaultMethod)
     : Interpolation(keywords(defaultPositionField, defaultMethod).read(dict), particles) {}

@@ -67,6 +67,9 @@ public:
 
     Method method() const { return method_; }
     const std::string& positionField() const { return positionField_; }
+    // The particle fields update() reads (some only where they exist: the volumes' mass and
+    // density, or volume), for a function object's FunctionObject::fieldsRead.
+    std::vector<std::string> fieldsRead() const;
     const Kernel& kernel() const { return *kernel_; }
 
     // The weights at each point.

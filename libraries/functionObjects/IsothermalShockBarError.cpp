@@ -98,6 +98,12 @@ IsothermalShockBarError::IsothermalShockBarError(const KeywordValues& values, co
                                          startTime());
 }
 
+std::optional<std::vector<std::string>> IsothermalShockBarError::fieldsRead() const {
+    std::vector<std::string> read{"position", "mass", "density", "velocity", "pressure", "smoothingLength"};
+    read.insert(read.end(), fields_.begin(), fields_.end());
+    return read;
+}
+
 void IsothermalShockBarError::write() {
     const FieldStore& fields = context().fields();
     const std::size_t n = fields.size();

@@ -14,6 +14,7 @@ public:
     std::vector<ErrorNorm> errorNorms() const override { return norms_.latest(); }
     std::vector<std::string> summary() const override { return summary_; }
     std::vector<ReferenceValue> referenceValues() const override { return references_; }
+    std::optional<std::vector<std::string>> fieldsRead() const override;
 
 private:
     IsothermalShockBarError(const KeywordValues& values, const std::string& name, const RunContext& context);

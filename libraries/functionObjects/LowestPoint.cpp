@@ -46,7 +46,8 @@ LowestPoint::LowestPoint(const Dictionary& dict, const std::string& name, const 
     : LowestPoint(keywords().read(dict), name, context) {}
 
 LowestPoint::LowestPoint(const KeywordValues& values, const std::string& name, const RunContext& context)
-    : FunctionObject(values, name, context), reference_(values.optionalScalar("reference")) {
+    : FunctionObject(values, name, context, ParticleScope::owned),
+      reference_(values.optionalScalar("reference")) {
     const Dictionary& dict = values.dict();
     const int dim = context.dimension();
     requireField(dict, "type", "globalId");
@@ -75,7 +76,7 @@ LowestPoint::LowestPoint(const KeywordValues& values, const std::string& name, c
 void LowestPoint::write() {
     const FieldStore& fields = context().fields();
     const int dim = fields.dimension();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase& x = fields.field("position");
     const FieldBase& gid = fields.field("globalId");
     const FieldBase* region = region_ >= 0 ? &fields.field("region") : nullptr;

@@ -51,7 +51,7 @@ PlaneCrossing::PlaneCrossing(const Dictionary& dict, const std::string& name, co
     : PlaneCrossing(keywords().read(dict), name, context) {}
 
 PlaneCrossing::PlaneCrossing(const KeywordValues& values, const std::string& name, const RunContext& context)
-    : FunctionObject(values, name, context),
+    : FunctionObject(values, name, context, ParticleScope::owned),
       stop_(values.flag("stopAtCrossing")),
       reference_(values.optionalScalar("reference")) {
     const Dictionary& dict = values.dict();
@@ -65,8 +65,8 @@ PlaneCrossing::PlaneCrossing(const KeywordValues& values, const std::string& nam
     const auto& p = values.vector("point");
     const auto& n = values.vector("normal");
     if (int(p.size()) != dim)
-        throw dict.error("point", "expected " + std::to_string(dim) + " components (a " + std::to_string(dim) +
-                                      "D run), found " + std::to_string(p.size()));
+        throw dict.error("point", "expected " + std::to_string(dim) + " components (a " +
+                                      std::to_string(dim) + "D run), found " + std::to_string(p.size()));
     if (int(n.size()) != dim)
         throw dict.error("normal", "expected " + std::to_string(dim) + " components (a " +
                                        std::to_string(dim) + "D run), found " + std::to_string(n.size()));
@@ -88,7 +88,7 @@ PlaneCrossing::PlaneCrossing(const KeywordValues& values, const std::string& nam
 void PlaneCrossing::write() {
     const FieldStore& fields = context().fields();
     const int dim = fields.dimension();
-    const std::size_t n = fields.size();
+    const std::size_t n = context().ownedParticles();
     const FieldBase& x = fields.field("position");
     const FieldBase& gid = fields.field("globalId");
     const FieldBase* region = region_ >= 0 ? &fields.field("region") : nullptr;
@@ -153,7 +153,8 @@ std::vector<ReferenceValue> PlaneCrossing::referenceValues() const {
 
 std::string PlaneCrossing::stopReason() const {
     char s[200];
-    std::snprintf(s, sizeof s, "planeCrossing: particle %lld crossed the plane at t = %.6g (stopAtCrossing yes)",
+    std::snprintf(s, sizeof s,
+                  "planeCrossing: particle %lld crossed the plane at t = %.6g (stopAtCrossing yes)",
                   static_cast<long long>(crossId_), crossTime_);
     return s;
 }
@@ -169,10 +170,11 @@ std::vector<std::string> PlaneCrossing::summary() const {
         return {s};
     }
     if (crossedAtStart_) {
-        std::snprintf(s, sizeof s,
-                      "planeCrossing '%s': particle %lld already beyond the plane (by %.6g) at the first write, "
-                      "t = %.6g",
-                      name().c_str(), static_cast<long long>(crossId_), crossDistance_, crossTime_);
+        std::snprintf(
+            s, sizeof s,
+            "planeCrossing '%s': particle %lld already beyond the plane (by %.6g) at the first write, "
+            "t = %.6g",
+            name().c_str(), static_cast<long long>(crossId_), crossDistance_, crossTime_);
         return {s};
     }
     const int dim = context().dimension();
@@ -191,7 +193,8 @@ std::vector<std::string> PlaneCrossing::summary() const {
     return {s};
 }
 
-MFDYN_REGISTER(FunctionObject, PlaneCrossing, "planeCrossing",
-               "first time a particle of a body crosses a plane (the dam exit time); optionally stops the run");
+MFDYN_REGISTER(
+    FunctionObject, PlaneCrossing, "planeCrossing",
+    "first time a particle of a body crosses a plane (the dam exit time); optionally stops the run");
 
 }  // namespace mfdyn

@@ -52,6 +52,12 @@ Probes::Probes(const KeywordValues& values, const std::string& name, const RunCo
     csv_ = std::make_unique<CsvFile>(outputFile("probes.csv"), columns, startTime());
 }
 
+std::optional<std::vector<std::string>> Probes::fieldsRead() const {
+    std::vector<std::string> read = interpolation_.fieldsRead();
+    read.insert(read.end(), fields_.begin(), fields_.end());
+    return read;
+}
+
 void Probes::write() {
     interpolation_.update();
     const auto stencils = interpolation_.stencils(points_);

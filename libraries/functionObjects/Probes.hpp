@@ -9,6 +9,7 @@ public:
     Probes(const Dictionary& dict, const std::string& name, const RunContext& context);
     static KeywordSchema keywords();
     void write() override;
+    std::optional<std::vector<std::string>> fieldsRead() const override;
 
 private:
     Probes(const KeywordValues& values, const std::string& name, const RunContext& context);

@@ -147,6 +147,12 @@ RiemannError::RiemannError(const KeywordValues& values, const std::string& name,
             startTime());
 }
 
+std::optional<std::vector<std::string>> RiemannError::fieldsRead() const {
+    std::vector<std::string> read{"position", "mass", "density", "velocity", "pressure"};
+    read.insert(read.end(), fields_.begin(), fields_.end());
+    return read;
+}
+
 void RiemannError::write() {
     const FieldStore& fields = context().fields();
     const std::size_t n = fields.size();

@@ -15,6 +15,7 @@ public:
     std::vector<std::string> summary() const override { return summary_; }
     // starPressure, starVelocity: the plateau medians against the exact star state.
     std::vector<ReferenceValue> referenceValues() const override { return references_; }
+    std::optional<std::vector<std::string>> fieldsRead() const override;
 
 private:
     RiemannError(const KeywordValues& values, const std::string& name, const RunContext& context);

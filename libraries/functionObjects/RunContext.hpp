@@ -42,6 +42,10 @@ public:
     virtual std::optional<DomainBox> domain() const { return std::nullopt; }
     // Particles [0, ownedParticles()) are this process's own; the rest are ghosts (images).
     virtual std::size_t ownedParticles() const { return fields().size(); }
+    // The solver's own context: this one, or on several ranks the one a function object's
+    // context wraps (FunctionObjectContext, which forwards every hook above: a new hook must be
+    // forwarded there too). For a cast to a method's interface (trajectoryError's body force).
+    virtual const RunContext& solverContext() const { return *this; }
 };
 
 }  // namespace mfdyn

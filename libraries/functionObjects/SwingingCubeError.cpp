@@ -146,6 +146,15 @@ SwingingCubeError::SwingingCubeError(const KeywordValues& values, const std::str
 
 SwingingCubeError::~SwingingCubeError() = default;
 
+std::optional<std::vector<std::string>> SwingingCubeError::fieldsRead() const {
+    std::vector<std::string> read{positionField_, "velocity", "firstPiolaStress", "mass", "density"};
+    if (interpolation_) {
+        const auto more = interpolation_->fieldsRead();
+        read.insert(read.end(), more.begin(), more.end());
+    }
+    return read;
+}
+
 void SwingingCubeError::refreshStencils() const {
     const FieldBase& X = context().fields().field(positionField_);
     const auto* data = static_cast<const double*>(X.data());

@@ -18,6 +18,7 @@ public:
     void write() override;
     std::vector<ErrorNorm> errorNorms() const override { return norms_.latest(); }
     std::vector<std::string> summary() const override { return summary_; }
+    std::optional<std::vector<std::string>> fieldsRead() const override;
 
     // One field's absolute norms at the current time, as written.
     struct Norms {

@@ -2,7 +2,9 @@
 
 #include "core/Case.hpp"
 
+#include "core/Communicator.hpp"
 #include "core/Error.hpp"
+#include "core/RankZero.hpp"
 #include "particles/VtpWriter.hpp"
 
 #include <signal.h>
@@ -13,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <iterator>
 
 namespace fs = std::filesystem;
 
@@ -38,22 +41,21 @@ void renameOrThrow(const fs::path& from, const fs::path& to) {
     if (ec) throw Error("cannot rename '" + from.string() + "' to '" + to.string() + "': " + ec.message());
 }
 
-}  // namespace
-
-void writeDirectoryAtomically(const fs::path& target, const std::function<void(const fs::path&)>& fill) {
+// An empty <target>.tmp-<pid> to fill.
+fs::path freshTemporary(const fs::path& target) {
     const fs::path tmp = target.string() + tmpSuffix();
     std::error_code ec;
     fs::remove_all(tmp, ec);  // a leftover of this pid, from a previous attempt
     if (!fs::create_directories(tmp, ec) && ec)
         throw Error("cannot create directory '" + tmp.string() + "': " + ec.message());
-    try {
-        fill(tmp);
-    } catch (...) {
-        fs::remove_all(tmp, ec);
-        throw;
-    }
+    return tmp;
+}
+
+// The complete `tmp` replaces `target`; if that fails, `target` is as it was.
+void putInPlace(const fs::path& tmp, const fs::path& target) {
     // rename(2) will not replace a non-empty directory, so the old one is moved aside first;
     // between the two renames the complete old state still exists under the aside name.
+    std::error_code ec;
     const fs::path old = target.string() + ".old" + tmpSuffix();
     const bool replacing = fs::exists(target);
     if (replacing) {
@@ -68,6 +70,160 @@ void writeDirectoryAtomically(const fs::path& target, const std::function<void(c
         throw;
     }
     if (replacing) fs::remove_all(old, ec);
+}
+
+// The time written into the particle file: `time`, or the value of the directory's name.
+double timeValue(const std::string& timeName, std::optional<double> time) {
+    double value = 0.0;
+    if (!time && !parseTime(timeName, value))
+        throw Error("time directory name '" + timeName + "' is not a number and no time was given");
+    return time ? *time : value;
+}
+
+// Extra files are plain names, and none is a particle file: the reader takes particles.vtp
+// before particles.pvtp, so an extra file of either name would replace the particles read back.
+void checkExtraFileNames(const std::vector<ExtraFile>& extraFiles, const std::string& timeName) {
+    for (const auto& [name, contents] : extraFiles) {
+        bool particleFile = name == particleFileName || name == particleIndexFileName;
+        for (int r = 0; r < Communicator::size() && !particleFile; ++r)
+            particleFile = name == particlePieceFileName(r);
+        if (name.empty() || name.find('/') != std::string::npos || particleFile || name == "." ||
+            name == "..")
+            throw Error("extra file name '" + name + "' in time directory '" + timeName +
+                        "' is not a plain name");
+    }
+}
+
+void writeExtraFiles(const fs::path& dir, const std::vector<ExtraFile>& extraFiles) {
+    for (const auto& [name, contents] : extraFiles) {
+        std::FILE* out = std::fopen((dir / name).c_str(), "wb");
+        if (!out) throw Error("cannot write '" + (dir / name).string() + "': " + std::strerror(errno));
+        bool bad = std::fwrite(contents.data(), 1, contents.size(), out) != contents.size();
+        bad = std::fclose(out) != 0 || bad;
+        if (bad) throw Error("cannot write '" + (dir / name).string() + "': " + std::strerror(errno));
+    }
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+    std::string text;
+    for (const auto& line : lines) text += (text.empty() ? "" : "\n") + line;
+    return text;
+}
+
+std::vector<std::string> splitLines(const std::string& text) {
+    std::vector<std::string> lines;
+    if (text.empty()) return lines;
+    std::size_t begin = 0;
+    for (std::size_t end = text.find('\n'); end != std::string::npos; end = text.find('\n', begin)) {
+        lines.push_back(text.substr(begin, end - begin));
+        begin = end + 1;
+    }
+    lines.push_back(text.substr(begin));
+    return lines;
+}
+
+// Pieces that disagree in their fields cannot be read back as one set (TimeDirectoryReader), so
+// they are refused before anything is written. Every rank sees every rank's list and reaches the
+// same verdict: all throw together, with the same words.
+void checkRanksHaveTheSameFields(const ParticleSetBase& particles, const std::string& timeName) {
+    // Sorted: the order the fields were made in may differ between ranks; the reader matches names.
+    std::vector<std::string> mine = pointDataAttributes(particles);
+    std::sort(mine.begin(), mine.end());
+    const std::string text = joined(mine);
+    const auto all = Communicator::allGatherVariable(std::vector<char>(text.begin(), text.end()));
+    const std::string first(all[0].begin(), all[0].end());
+    for (std::size_t r = 1; r < all.size(); ++r) {
+        const std::string theirs(all[r].begin(), all[r].end());
+        if (theirs == first) continue;
+        const auto a = splitLines(first), b = splitLines(theirs);
+        std::vector<std::string> onlyZero, onlyThem;
+        std::set_difference(a.begin(), a.end(), b.begin(), b.end(), std::back_inserter(onlyZero));
+        std::set_difference(b.begin(), b.end(), a.begin(), a.end(), std::back_inserter(onlyThem));
+        throw Error("cannot write time " + timeName + ": the ranks' particles have different fields, so " +
+                    "the pieces could not be read back as one set; rank 0 alone has [" + joined(onlyZero) +
+                    "], rank " + std::to_string(r) + " alone has [" + joined(onlyThem) + "]");
+    }
+}
+
+std::string broadcastText(std::string text, int root) {
+    std::uint64_t length = text.size();
+    Communicator::broadcast(&length, sizeof length, root);
+    text.resize(length);
+    Communicator::broadcast(text.data(), length, root);
+    return text;
+}
+
+fs::path writePieces(const fs::path& target, const std::string& timeName, const ParticleSetBase& particles,
+                     const std::vector<ExtraFile>& extraFiles, std::optional<double> time) {
+    const int rank = Communicator::rank();
+    double value = 0.0;
+    std::exception_ptr failure;
+    try {
+        value = timeValue(timeName, time);
+        checkExtraFileNames(extraFiles, timeName);
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    shareFailure(failure);
+    checkRanksHaveTheSameFields(particles, timeName);
+    // Ids are never reused after a restart from the pieces, whichever rank removed the highest.
+    std::vector<std::int64_t> nextIds(std::size_t(Communicator::size()));
+    const std::int64_t mine = particles.nextGlobalId();
+    Communicator::allGather(&mine, sizeof mine, nextIds.data());
+    const std::int64_t nextGlobalId = *std::max_element(nextIds.begin(), nextIds.end());
+
+    fs::path tmp;
+    onRankZero([&] { tmp = freshTemporary(target); });
+    tmp = broadcastText(tmp.string(), 0);
+    failure = nullptr;
+    try {
+        writeVtp(tmp / particlePieceFileName(rank), particles, value, nextGlobalId);
+    } catch (...) {
+        failure = std::current_exception();
+    }
+    try {
+        shareFailure(failure);  // also the barrier: every piece is complete after it
+    } catch (...) {
+        std::error_code ec;
+        if (rank == 0) fs::remove_all(tmp, ec);
+        throw;
+    }
+    onRankZero([&] {
+        try {
+            std::vector<std::string> pieces;
+            for (int r = 0; r < Communicator::size(); ++r) pieces.push_back(particlePieceFileName(r));
+            writePvtp(tmp / particleIndexFileName, particles, pieces);
+            writeExtraFiles(tmp, extraFiles);
+        } catch (...) {
+            std::error_code ec;
+            fs::remove_all(tmp, ec);
+            throw;
+        }
+        putInPlace(tmp, target);
+    });  // no rank goes on before the directory is in place
+    return target;
+}
+
+}  // namespace
+
+std::string particlePieceFileName(int rank) {
+    return "particles_" + std::to_string(rank) + ".vtp";
+}
+
+const char* writtenParticleFileName() {
+    return Communicator::distributed() ? particleIndexFileName : particleFileName;
+}
+
+void writeDirectoryAtomically(const fs::path& target, const std::function<void(const fs::path&)>& fill) {
+    const fs::path tmp = freshTemporary(target);
+    try {
+        fill(tmp);
+    } catch (...) {
+        std::error_code ec;
+        fs::remove_all(tmp, ec);
+        throw;
+    }
+    putInPlace(tmp, target);
 }
 
 void writeFileAtomically(const fs::path& file, const std::string& contents) {
@@ -87,25 +243,13 @@ void writeFileAtomically(const fs::path& file, const std::string& contents) {
 fs::path writeTimeDirectory(const fs::path& caseDir, const std::string& timeName,
                             const ParticleSetBase& particles, const std::vector<ExtraFile>& extraFiles,
                             std::optional<double> time) {
-    double value = 0.0;
-    if (!time && !parseTime(timeName, value))
-        throw Error("time directory name '" + timeName + "' is not a number and no time was given");
-    if (time) value = *time;
-    for (const auto& [name, contents] : extraFiles)
-        if (name.empty() || name.find('/') != std::string::npos || name == particleFileName || name == "." ||
-            name == "..")
-            throw Error("extra file name '" + name + "' in time directory '" + timeName +
-                        "' is not a plain name");
     const fs::path target = caseDir / timeName;
+    if (Communicator::distributed()) return writePieces(target, timeName, particles, extraFiles, time);
+    const double value = timeValue(timeName, time);
+    checkExtraFileNames(extraFiles, timeName);
     writeDirectoryAtomically(target, [&](const fs::path& tmp) {
         writeVtp(tmp / particleFileName, particles, value);
-        for (const auto& [name, contents] : extraFiles) {
-            std::FILE* out = std::fopen((tmp / name).c_str(), "wb");
-            if (!out) throw Error("cannot write '" + (tmp / name).string() + "': " + std::strerror(errno));
-            bool bad = std::fwrite(contents.data(), 1, contents.size(), out) != contents.size();
-            bad = std::fclose(out) != 0 || bad;
-            if (bad) throw Error("cannot write '" + (tmp / name).string() + "': " + std::strerror(errno));
-        }
+        writeExtraFiles(tmp, extraFiles);
     });
     return target;
 }

@@ -7,6 +7,14 @@
 //
 // Files are not fsync'ed: the guarantee is against the process dying, not against power loss,
 // for which the cost of syncing every write would be paid on every run.
+//
+// Under mpirun (Communicator::distributed()) each rank holds only its own particles, and a time
+// is written in pieces: rank 0 makes the temporary directory, every rank writes its owned
+// particles into it as particles_<rank>.vtp, rank 0 adds particles.pvtp (the index of the
+// pieces, VtpWriter.hpp) and the extra files, and renames the directory into place. The same
+// atomicity holds: the pieces appear together or not at all. A failure on any rank fails the
+// write on every rank (core/RankZero.hpp), and no rank returns before the directory is in place.
+// readTimeParticles (TimeDirectoryReader.hpp) reads either form, on any number of ranks.
 #include "particles/ParticleSetBase.hpp"
 
 #include <filesystem>
@@ -21,11 +29,19 @@ namespace mfdyn {
 // (file name, contents) of a small file written next to particles.vtp (the solver's `state`).
 using ExtraFile = std::pair<std::string, std::string>;
 
-// The name of the particle file in each time directory.
+// The name of the particle file in each time directory written by one process.
 inline constexpr const char* particleFileName = "particles.vtp";
+// The index of the pieces in a time directory written by several ranks, and rank r's piece.
+inline constexpr const char* particleIndexFileName = "particles.pvtp";
+std::string particlePieceFileName(int rank);
+// The file that opens a time this run writes (particles.pvd's entry): particleFileName on one
+// process, particleIndexFileName under mpirun.
+const char* writtenParticleFileName();
 
 // Writes <caseDir>/<timeName>/particles.vtp (with `time`, by default the value of timeName)
 // and the extra files, atomically; an existing <timeName> is replaced. Returns the directory.
+// Distributed: collective; the pieces and their index instead of particles.vtp (above), and the
+// extra files are rank 0's (the state is the same on every rank).
 std::filesystem::path writeTimeDirectory(const std::filesystem::path& caseDir, const std::string& timeName,
                                          const ParticleSetBase& particles,
                                          const std::vector<ExtraFile>& extraFiles = {},

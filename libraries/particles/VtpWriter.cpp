@@ -3,6 +3,7 @@
 #include "core/Error.hpp"
 #include "particles/XmlElement.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cerrno>
 #include <cstdio>
@@ -140,11 +141,15 @@ std::string arrayAttributes(const std::string& type, const std::string& name, in
            std::to_string(components) + "\"";
 }
 
+std::string fieldAttributes(const FieldBase& f) {
+    return arrayAttributes(f.isInteger() ? "Int64" : "Float64", f.name(), vtkComponents(f.kind()));
+}
+
 Block fieldBlock(const std::string& section, const FieldBase& f, std::size_t n) {
     Block b;
     b.section = section;
     const int width = vtkComponents(f.kind());
-    b.attributes = arrayAttributes(f.isInteger() ? "Int64" : "Float64", f.name(), width);
+    b.attributes = fieldAttributes(f);
     b.bytes = std::uint64_t(n) * width * 8;
     b.emit = [&f, n, source = vtkComponentSource(f.kind(), f.dimension())](std::FILE* out) {
         if (f.isInteger())
@@ -199,7 +204,8 @@ Block valueBlock(const std::string& type, const std::string& name, T value) {
 
 }  // namespace
 
-void writeVtp(const std::filesystem::path& file, const ParticleSetBase& particles, double time) {
+void writeVtp(const std::filesystem::path& file, const ParticleSetBase& particles, double time,
+              std::int64_t runNextGlobalId) {
     // Owned particles only: ghosts are remade from them each step (ParticleSetBase).
     const std::size_t n = particles.ownedCount();
     const FieldBase& position = particles.field("position");
@@ -214,7 +220,7 @@ void writeVtp(const std::filesystem::path& file, const ParticleSetBase& particle
         const auto& id = particles.requireField<std::int64_t>("globalId");
         std::int64_t implied = 0;
         for (std::size_t i = 0; i < n; ++i) implied = std::max(implied, id[i] + 1);
-        const std::int64_t next = particles.nextGlobalId();
+        const std::int64_t next = std::max(particles.nextGlobalId(), runNextGlobalId);
         if (next > implied) blocks.push_back(valueBlock<std::int64_t>("Int64", "nextGlobalId", next));
     }
     if (!particles.regionNames.empty()) blocks.push_back(stringsBlock("regionNames", particles.regionNames));
@@ -268,6 +274,33 @@ void writeVtp(const std::filesystem::path& file, const ParticleSetBase& particle
     }
     const std::string tail = "\n  </AppendedData>\n</VTKFile>\n";
     out.write(tail.data(), tail.size());
+    out.close();
+}
+
+std::vector<std::string> pointDataAttributes(const ParticleSetBase& particles) {
+    const FieldBase& position = particles.field("position");
+    std::vector<std::string> attributes;
+    for (const auto& f : particles.fields())
+        if (f.get() != &position) attributes.push_back(fieldAttributes(*f));
+    return attributes;
+}
+
+void writePvtp(const std::filesystem::path& file, const ParticleSetBase& particles,
+               const std::vector<std::string>& pieces) {
+    std::ostringstream xml;
+    xml << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"PPolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+        << "  <PPolyData GhostLevel=\"0\">\n    <PPointData>\n";
+    for (const std::string& attributes : pointDataAttributes(particles))
+        xml << "      <PDataArray " << attributes << "/>\n";
+    xml << "    </PPointData>\n    <PPoints>\n"
+        << "      <PDataArray " << fieldAttributes(particles.field("position")) << "/>\n"
+        << "    </PPoints>\n";
+    for (const std::string& piece : pieces) xml << "    <Piece Source=\"" << xmlEscape(piece) << "\"/>\n";
+    xml << "  </PPolyData>\n</VTKFile>\n";
+    Output out(file);
+    const std::string text = xml.str();
+    out.write(text.data(), text.size());
     out.close();
 }
 

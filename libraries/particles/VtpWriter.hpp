@@ -22,14 +22,39 @@
 //
 // Every array is format="appended" and raw: no base64 or compression, so writing is one pass of
 // fwrite and reading a memcpy per field, and doubles round-trip exactly.
+//
+// A run on several ranks writes one such file per rank, its piece (particles_<rank>.vtp: that
+// rank's owned particles), and an index of them, particles.pvtp (VTK's parallel PolyData, which
+// ParaView opens as one data set):
+//   <VTKFile type="PPolyData" version="1.0" byte_order="LittleEndian" header_type="UInt64">
+//     <PPolyData GhostLevel="0">
+//       <PPointData> one PDataArray per PointData array of the pieces (type, Name,
+//                    NumberOfComponents as there)
+//       <PPoints>    the PDataArray of the Points
+//       <Piece Source="particles_0.vtp"/> ... one per rank, in rank order
 #include "particles/ParticleSetBase.hpp"
 
+#include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace mfdyn {
 
-void writeVtp(const std::filesystem::path& file, const ParticleSetBase& particles, double time);
+// `runNextGlobalId`: the next id of the whole run when the particles are one rank's piece (the
+// largest nextGlobalId() over the ranks), so that the pieces read together never reuse an id;
+// 0: this set's own. FieldData nextGlobalId is written when the larger of the two is above this
+// set's largest id + 1.
+void writeVtp(const std::filesystem::path& file, const ParticleSetBase& particles, double time,
+              std::int64_t runNextGlobalId = 0);
+
+// The index of `pieces` (file names relative to the index), whose arrays are those writeVtp
+// writes for `particles` (every rank's set has the same fields).
+void writePvtp(const std::filesystem::path& file, const ParticleSetBase& particles,
+               const std::vector<std::string>& pieces);
+// The attributes (type, Name, NumberOfComponents) of each PointData array writeVtp writes for
+// `particles`, in its order: what the pieces of one time must agree on.
+std::vector<std::string> pointDataAttributes(const ParticleSetBase& particles);
 
 // Components a field of this kind has in the file: 1, 3, 9, 6, 1.
 int vtkComponents(FieldKind kind);

@@ -4,13 +4,14 @@
 #include "core/Communicator.hpp"
 #include "core/LibraryLoader.hpp"
 #include "core/Parallel.hpp"
+#include "core/RankZero.hpp"
 #include "core/SignalHandler.hpp"
 #include "functionObjects/CsvFile.hpp"
 #include "functionObjects/FunctionObject.hpp"
 #include "particles/Decomposition.hpp"
 #include "particles/PvdIndex.hpp"
 #include "particles/TimeDirectory.hpp"
-#include "particles/VtpReader.hpp"
+#include "particles/TimeDirectoryReader.hpp"
 #include "solver/Solver.hpp"
 
 #include <algorithm>
@@ -76,14 +77,26 @@ std::string errorLines(const std::vector<FunctionObjectList::ErrorRecord>& recor
     return s.str();
 }
 
+// A signal reaches the ranks at different steps (or only some of them): the largest number any
+// rank has is every rank's, so all write the same final state and stop after the same step.
+int collectiveStopSignal() {
+    return int(globalMax(double(SignalHandler::stopRequested())));
+}
+
+// The particles of the run, owned by every rank together (ghosts are images, not particles).
+std::size_t globalParticleCount(const ParticleSetBase& particles) {
+    return globalSum(particles.ownedCount());
+}
+
 }  // namespace
 
 SolverRun::SolverRun(const Arguments& args, std::string application)
     : application_(std::move(application)), case_(args.caseDir()), controlDict_(readControlDict(case_)) {
     Log::info(banner(application_, case_.root(), args.commandLine()));
-    // Before anything is read that another run could be writing; held until the run ends.
-    // One lock for the job: rank 0 takes it (the others would find it taken).
-    if (Communicator::rank() == 0) lock_ = std::make_unique<CaseLock>(case_.root(), application_);
+    // Before anything is read that another run could be writing; held until the run ends. Under
+    // mpirun by rank 0 for the whole run (the other ranks would find it taken, by their own run);
+    // a refusal stops every rank.
+    onRankZero([&] { lock_ = std::make_unique<CaseLock>(case_.root(), application_); });
     // Libraries first: their models must be selectable before anything is read.
     LibraryLoader::load(controlDict_, case_.root());
     time_ = std::make_unique<Time>(case_.systemFile("controlDict"), controlDict_);
@@ -106,10 +119,12 @@ SolverRun::SolverRun(const Arguments& args, std::string application)
     startTimeName_ = start->name;
     startDirectoryValue_ = start->value;
     lastWritten_ = start->name;  // the start directory is input: never written, not even at the end
-    const fs::path particleFile = case_.timeDir(start->name) / "particles.vtp";
+    // particles.vtp, or the particles.pvtp of a time written on several ranks.
+    const fs::path particleFile = timeParticleFile(case_.timeDir(start->name));
     std::error_code ec;  // without it a self-linked particles.vtp threw filesystem_error ("internal")
-    if (!fs::exists(particleFile, ec) && !ec) throw InputError("cannot find " + particleFile.string());
-    particles_ = std::move(readVtp(particleFile).particles);
+    if (!fs::exists(particleFile, ec) && !ec)
+        throw InputError("cannot find " + particleFile.string() + " (nor " + particleIndexFileName + ")");
+    particles_ = std::move(readTimeParticles(case_.timeDir(start->name)).particles);
     time_->start(start->value, start->name);
     // Read (and so checked) now; changed only in prepareOutputs, once the input is known good.
     pvd_ = std::make_unique<PvdIndex>(PvdIndex::read(case_.root() / "particles.pvd"));
@@ -184,12 +199,15 @@ void SolverRun::prepareOutputs() {
     // time. It is rewritten before the move, so that it never points into a moved directory.
     PvdIndex pvd(pvd_->file());
     bool listsStart = false;
+    // The start's own particle file: particles.pvtp where a run on several ranks wrote it.
+    const std::string startFile =
+        startTimeName_ + "/" + timeParticleFile(case_.timeDir(startTimeName_)).filename().string();
     for (const auto& e : pvd_->entries()) {
         if (e.time > time_->value() || inLater(e.file)) continue;
         pvd.add(e.time, e.file, e.part);
-        listsStart = listsStart || e.file == startTimeName_ + "/" + particleFileName;
+        listsStart = listsStart || e.file == startFile;
     }
-    if (!listsStart) pvd.add(time_->value(), startTimeName_ + "/" + particleFileName);
+    if (!listsStart) pvd.add(time_->value(), startFile);
     if (pvd.entries().size() != pvd_->entries().size() || !listsStart) pvd.write();
     if (!later.empty()) {
         const fs::path aside = moveAsideTimeDirectories(case_.root(), later);
@@ -226,16 +244,19 @@ void SolverRun::write(Solver& solver) {
     std::vector<ExtraFile> files{{"state", state}};
     for (auto& file : solver.extraOutput()) files.push_back(std::move(file));
     writeTimeDirectory(case_.root(), time.timeName(), solver.particles(), files, time.value());
-    pvd_->add(time.value(), time.timeName() + "/" + particleFileName);
-    // A grid method's image files (grid.vti) are further parts of the same time, so ParaView
-    // opens the grid with the particles (PvdIndex.hpp); the state and other files are not VTK.
-    int part = 0;
-    for (const auto& [name, contents] : files)
-        if (name.ends_with(".vti")) pvd_->add(time.value(), time.timeName() + "/" + name, ++part);
-    pvd_->write();
+    // The index and the purge are the case's files: rank 0's alone (it keeps the index in memory).
+    onRankZero([&] {
+        pvd_->add(time.value(), time.timeName() + "/" + writtenParticleFileName());
+        // A grid method's image files (grid.vti) are further parts of the same time, so ParaView
+        // opens the grid with the particles (PvdIndex.hpp); the state and other files are not VTK.
+        int part = 0;
+        for (const auto& [name, contents] : files)
+            if (name.ends_with(".vti")) pvd_->add(time.value(), time.timeName() + "/" + name, ++part);
+        pvd_->write();
+    });
     lastWritten_ = time.timeName();
     time_->wrote();
-    purge();
+    onRankZero([&] { purge(); });
     writeSeconds_ += watch.seconds();
 }
 
@@ -337,8 +358,9 @@ int SolverRun::run(Solver& solver) {
     for (const auto& e : controlDict_.defaultsUsed()) defaults += "\n    " + e;
     if (!defaults.empty()) Log::info("Defaults used:" + defaults);
 
-    // Everything is read and constructed: only now may earlier results change.
-    prepareOutputs();
+    // Everything is read and constructed: only now may earlier results change. Rank 0 changes them;
+    // onRankZero is also the barrier that keeps the other ranks from writing before it is done.
+    onRankZero([&] { prepareOutputs(); });
     SignalHandler::install();
     setUpSeconds_ = clock_.seconds();
     Stopwatch stepping;
@@ -378,7 +400,7 @@ int SolverRun::run(Solver& solver) {
         }
         time.advance(dt);
 
-        stopSignal = SignalHandler::stopRequested();
+        stopSignal = collectiveStopSignal();
         if (auto changes = time.checkModified(); !changes.empty()) Log::info(changes);
         if (time.stopAt() != StopAt::endTime) {
             stoppedByControl = true;
@@ -409,7 +431,8 @@ int SolverRun::run(Solver& solver) {
             Log::info(progressLine(time, elapsed, startTime) + "  [" + vote.reason + "]" +
                       (writing ? "  wrote " + time.timeName() : ""));
         }
-        if (const std::string request = stopSignal ? std::string() : functions.stopRequest(); !request.empty()) {
+        if (const std::string request = stopSignal ? std::string() : functions.stopRequest();
+            !request.empty()) {
             // A function object ends the run (planeCrossing's stopAtCrossing): a result, not a
             // failure, so the state is written (and the objects that write with it run) and the
             // status is 0.
@@ -432,13 +455,13 @@ int SolverRun::run(Solver& solver) {
     }
     if (!stopSignal && !stoppedByControl && lastWritten_ != time.timeName()) write(solver);
     // A signal after the last step: the state is written all the same, and the status says so.
-    if (!stopSignal) stopSignal = SignalHandler::stopRequested();
+    if (!stopSignal) stopSignal = collectiveStopSignal();
     summary(solver, stepping.seconds(), time.timeIndex() - startIndex);
 
     // Error norms beside the run time that bought them.
     const auto norms = functions.errorNorms();
     const double wall = clock_.seconds();
-    const std::size_t n = solver.particles().size();
+    const std::size_t n = globalParticleCount(solver.particles());
     const std::int64_t steps = time.timeIndex() - startIndex;
     std::ostringstream s;
     for (const auto& line : functions.summary()) s << "\n    " << line;
@@ -479,7 +502,7 @@ int SolverRun::run(Solver& solver) {
 
 void SolverRun::summary(const Solver& solver, double steppingSeconds, std::int64_t stepsRun) {
     const Time& time = *time_;
-    const std::size_t n = const_cast<Solver&>(solver).particles().size();
+    const std::size_t n = globalParticleCount(const_cast<Solver&>(solver).particles());
     std::ostringstream s;
     char line[200];
     std::snprintf(line, sizeof line,
@@ -501,7 +524,8 @@ void SolverRun::summary(const Solver& solver, double steppingSeconds, std::int64
     // phaseTimes may decorate a name, "updateNeighbours (84 rebuilds)": its first word is the phase.)
     const std::vector<std::string> skipped = solver.skippedPhases();
     for (const auto& [phase, seconds] : solver.phaseTimes()) {
-        if (std::find(skipped.begin(), skipped.end(), phase.substr(0, phase.find(' '))) != skipped.end()) continue;
+        if (std::find(skipped.begin(), skipped.end(), phase.substr(0, phase.find(' '))) != skipped.end())
+            continue;
         std::snprintf(line, sizeof line, "    phase %-14s %s (%.1f%%)\n", phase.c_str(),
                       formatSeconds(seconds).c_str(),
                       steppingSeconds > 0 ? 100 * seconds / steppingSeconds : 0.0);

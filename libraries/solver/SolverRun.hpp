@@ -17,6 +17,11 @@
 // prepares the outputs: stale temporaries are swept, time directories later than the start are
 // moved into abandoned.<N>/ and particles.pvd is cut after the start's exact time. The start
 // directory is input and is never written.
+//
+// Under mpirun every rank runs this loop; the case's own files are rank 0's (the lock, the sweep
+// and moves, particles.pvd, purgeWrite, the CSV files), each time is written in pieces
+// (particles/TimeDirectory.hpp), and the start is read whole on every rank, however many ranks
+// wrote it (particles/TimeDirectoryReader.hpp).
 #include "core/Application.hpp"
 #include "core/Case.hpp"
 #include "core/Dictionary.hpp"

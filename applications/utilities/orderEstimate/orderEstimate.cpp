@@ -21,7 +21,8 @@
 //     positionField position;              // referencePosition: compare in the reference configuration
 //
 // At each time that all three runs wrote (matched by value to 1e-9 relative; a time that only
-// some runs have is skipped, with one warning naming them all) each run's particles.vtp is read
+// some runs have is skipped, with one warning naming them all) each run's particles.vtp (or the
+// pieces of its particles.pvtp, a run on several ranks) is read
 // and its fields are interpolated (functionObjects/Interpolation.hpp, as `sample` does) onto the
 // grid points x = spacing (i, j, k) inside the intersection of the three runs' bounding boxes.
 // A point counts where, in every run, the Shepard kernel sum
@@ -68,7 +69,7 @@
 #include "kernels/Kernel.hpp"
 #include "particles/ParticleSetBase.hpp"
 #include "particles/TimeDirectory.hpp"
-#include "particles/VtpReader.hpp"
+#include "particles/TimeDirectoryReader.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -160,7 +161,7 @@ void refuseUnknownEntries(const Dictionary& dict) {
 struct Run {
     std::string name;  // as given in `runs`
     fs::path dir;
-    std::vector<TimeDirectory> times;  // those holding particles.vtp
+    std::vector<TimeDirectory> times;  // those holding particles.vtp or particles.pvtp
 };
 
 // One time written by all three runs: its value in the coarse run and each run's directory name.
@@ -291,8 +292,8 @@ struct RunState {
 RunState loadRun(const Run& run, const std::string& timeName, const Dictionary& dict,
                  const KeywordValues& values, const std::vector<std::string>& fields, int runIndex) {
     RunState s;
-    s.file = run.dir / timeName / particleFileName;
-    s.data = readVtp(s.file);
+    s.file = timeParticleFile(run.dir / timeName);
+    s.data = readTimeParticles(run.dir / timeName);
     const ParticleSetBase& particles = s.particles();
     const std::size_t n = particles.size();
     const int dim = particles.dimension();
@@ -453,11 +454,11 @@ int run(const Arguments& args) {
             throw values.error("runs", std::string("the ") + runRoles[std::size_t(k)] + " run's directory " +
                                            r.dir.string() + " does not exist");
         for (const auto& t : Case(r.dir).timeDirectories())
-            if (fs::exists(r.dir / t.name / particleFileName, ec)) r.times.push_back(t);
+            if (fs::exists(timeParticleFile(r.dir / t.name), ec)) r.times.push_back(t);
         if (r.times.empty())
             throw values.error("runs", std::string("the ") + runRoles[std::size_t(k)] + " run " +
                                            r.dir.string() + " has no time directory with a " +
-                                           particleFileName);
+                                           particleFileName + " or " + particleIndexFileName);
     }
     const auto common = commonTimes(runs);
     if (common.empty()) {

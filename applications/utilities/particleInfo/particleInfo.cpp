@@ -11,7 +11,7 @@
 #include "core/Parallel.hpp"
 #include "particles/ParticleSetBase.hpp"
 #include "particles/TimeDirectory.hpp"
-#include "particles/VtpReader.hpp"
+#include "particles/TimeDirectoryReader.hpp"
 
 #include <cmath>
 #include <cstdio>
@@ -114,8 +114,8 @@ void printField(const FieldBase& f, std::vector<std::string>& warnings) {
 
 int run(const Arguments& args) {
     const std::string time = timeToRead(args);
-    const auto file = args.caseDir() / time / particleFileName;
-    const ParticleFile data = readVtp(file);
+    const auto file = timeParticleFile(args.caseDir() / time);
+    const ParticleFile data = readTimeParticles(args.caseDir() / time);
     const ParticleSetBase& particles = *data.particles;
 
     std::cout << "file        " << file.string() << "\n"
@@ -157,7 +157,8 @@ int main(int argc, char** argv) {
     ApplicationInfo info{
         "particleInfo",
         "Print the dimension, particle count, particles per region and the range of every field\n"
-        "of <case>/<time>/particles.vtp (by default the latest time).",
+        "of <case>/<time>/particles.vtp, or of the pieces its particles.pvtp lists (written on several\n"
+        "ranks), by default of the latest time.",
         {{"time", "name", "the time directory to read"},
          {"latestTime", "", "read the latest time directory (the default)"}},
         {}};

@@ -27,8 +27,7 @@
 #include "functionObjects/Interpolation.hpp"
 #include "functionObjects/SamplingSet.hpp"
 #include "particles/ParticleSetBase.hpp"
-#include "particles/TimeDirectory.hpp"
-#include "particles/VtpReader.hpp"
+#include "particles/TimeDirectoryReader.hpp"
 
 #include <cstdlib>
 #include <fstream>
@@ -108,8 +107,8 @@ int run(const Arguments& args) {
     }
 
     for (const auto& time : chosenTimes(args, runCase)) {
-        const auto file = runCase.timeDir(time.name) / particleFileName;
-        const ParticleFile data = readVtp(file);
+        const auto file = timeParticleFile(runCase.timeDir(time.name));
+        const ParticleFile data = readTimeParticles(runCase.timeDir(time.name));
         const ParticleSetBase& particles = *data.particles;
         std::vector<const FieldBase*> chosen;
         for (const auto& name : fields) {

@@ -46,18 +46,18 @@ public:
         const FieldBase& ids = fields.field("globalId");
         for (std::size_t i = 0; i < fields.size(); ++i)
             if (std::int64_t(ids.component(i, 0)) == particle_) {
-                static_cast<double*>(field->data())[i * std::size_t(field->components()) + std::size_t(component_)] =
-                    value_;
-                Log::info("plantFault: " + field_ + " component " + std::to_string(component_) + " of particle " +
-                          std::to_string(particle_) + " set to " + valueText_ + " at t = " +
-                          context().time().timeName());
+                static_cast<double*>(
+                    field->data())[i * std::size_t(field->components()) + std::size_t(component_)] = value_;
+                Log::info("plantFault: " + field_ + " component " + std::to_string(component_) +
+                          " of particle " + std::to_string(particle_) + " set to " + valueText_ +
+                          " at t = " + context().time().timeName());
             }
     }
     void write() override {}
 
 private:
     PlantFault(const KeywordValues& v, const std::string& name, const RunContext& context)
-        : FunctionObject(v, name, context),
+        : FunctionObject(v, name, context, ParticleScope::owned),
           time_(v.scalar("time")),
           particle_(v.integer("particle")),
           field_(v.word("field")),

@@ -89,7 +89,9 @@ TEST(ReferenceErrorReductions, TrajectoryErrorNormsAndMaximaAreOverEveryRank) {
     auto& p = context.particles;
     p.resize(3);
     auto& v = p.vectorField("velocity");
-    for (std::size_t i = 0; i < 3; ++i) p.position()[i] = Vector<2>(double(i), 0), v[i] = Vector<2>(1, 0);
+    // Each particle is compared with its own start state, found by its global id.
+    for (std::size_t i = 0; i < 3; ++i)
+        p.globalId()[i] = std::int64_t(i), p.position()[i] = Vector<2>(double(i), 0), v[i] = Vector<2>(1, 0);
     TrajectoryError error(Dictionary::parse("type trajectoryError;", "trajectory"), "trajectory", context);
     // After tau = 0.1 the exact state is x = x0 + (0.1, -0.05), v = (1, -1). Put particle k off
     // it by 0.001 k in x and 0.002 k in v_x: L1 = mean, Linf = the largest, exactly these numbers.
@@ -111,6 +113,30 @@ TEST(ReferenceErrorReductions, TrajectoryErrorNormsAndMaximaAreOverEveryRank) {
     EXPECT_EQ(norms[1].field, "velocity");
     EXPECT_NEAR(norms[1].L1, 0.002, 1e-12);
     EXPECT_NEAR(norms[1].Linf, 0.004, 1e-12);
+}
+
+// Under MPI particles change rank and order (a migration sorts each rank's by global id): each is
+// compared with its own start state, found by its id, not with the one at its index then.
+TEST(ReferenceErrorReductions, TrajectoryErrorFollowsEachParticleByItsGlobalId) {
+    Context context("trajectoryOrder", gravity());
+    auto& p = context.particles;
+    p.resize(3);
+    auto& v = p.vectorField("velocity");
+    for (std::size_t i = 0; i < 3; ++i)
+        p.globalId()[i] = std::int64_t(i), p.position()[i] = Vector<2>(double(i), 0), v[i] = Vector<2>(1, 0);
+    TrajectoryError error(Dictionary::parse("type trajectoryError;", "trajectory"), "trajectory", context);
+    context.mutableTime().advance(0.1);
+    p.reorder({2, 1, 0});
+    // Each exactly on its trajectory: x0 + (0.1, -0.05), v = (1, -1); by index 0 would be 2 off.
+    for (std::size_t i = 0; i < 3; ++i) {
+        p.position()[i] = Vector<2>(double(p.globalId()[i]) + 0.1, -0.05);
+        v[i] = Vector<2>(1, -1);
+    }
+    error.write();
+    const auto norms = error.errorNorms();
+    ASSERT_EQ(norms.size(), 2u);
+    EXPECT_LT(norms[0].Linf, 1e-15);  // round-off of x0 + 0.1
+    EXPECT_LT(norms[1].Linf, 1e-15);
 }
 
 TEST(ReferenceErrorReductions, TrajectoryErrorRefusesAForceWithoutExactTrajectoryOnEveryRank) {

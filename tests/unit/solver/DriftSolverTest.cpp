@@ -7,6 +7,7 @@
 #include "particles/ParticleSet.hpp"
 #include "particles/TimeDirectory.hpp"
 #include "particles/VtpReader.hpp"
+#include "particles/VtpWriter.hpp"
 #include "solver/Solver.hpp"
 #include "solver/SolverRun.hpp"
 
@@ -133,6 +134,42 @@ TEST(SolverTemplate, DriftingParticlesLandWhereTheExactAnswerSays) {
     EXPECT_EQ(word, "preSteps");
     EXPECT_GE(preSteps, 116);
     EXPECT_LE(preSteps, 120);  // the write times at 0.5 and 1 may each add a shortened step
+    fs::remove_all(dir);
+}
+
+TEST(SolverTemplate, ARunStartsFromATimeWrittenInPieces) {
+    // 0/ as a run on three ranks leaves a time (particles.pvtp and one piece per rank, ids dealt
+    // out id % 3): one process reads every piece, and writes its own times as particles.vtp.
+    const fs::path dir = makeCase("pieces", "lengthScale 0.1;\n");
+    const ParticleFile whole = readVtp(dir / "0" / particleFileName);
+    std::vector<std::string> pieces;
+    for (int rank = 0; rank < 3; ++rank) {
+        auto piece = whole.particles->clone();
+        std::vector<std::size_t> mine;
+        for (std::size_t i = 0; i < piece->size(); ++i)
+            if (piece->requireField<std::int64_t>("globalId")[i] % 3 == rank) mine.push_back(i);
+        piece->keep(mine);
+        pieces.push_back(particlePieceFileName(rank));
+        writeVtp(dir / "0" / pieces.back(), *piece, 0.0);
+    }
+    writePvtp(dir / "0" / particleIndexFileName, *whole.particles, pieces);
+    fs::remove(dir / "0" / particleFileName);
+
+    ASSERT_EQ(runDrift(dir), 0);
+    const ParticleFile result = readVtp(dir / "1" / particleFileName);
+    const auto& x = particleSetCast<3>(*result.particles).position();
+    ASSERT_EQ(x.size(), 5u);
+    for (std::size_t i = 0; i < 5; ++i) {
+        const Vector<3> exact =
+            Vector<3>(0.1 * double(i), -0.3, 1.0 / 3.0) + Vector<3>(1.0 + double(i), -0.7 * double(i), 0.25);
+        EXPECT_LT((x[i] - exact).norm(), 1e-12) << "particle " << i;  // as in the test above
+    }
+    std::ifstream in(dir / "particles.pvd");
+    const std::string pvd((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(pvd.find("file=\"0/particles.pvtp\""), std::string::npos) << "the start as it is: " << pvd;
+    EXPECT_NE(pvd.find("file=\"0.5/particles.vtp\""), std::string::npos) << pvd;
+    EXPECT_NE(pvd.find("file=\"1/particles.vtp\""), std::string::npos) << pvd;
+    EXPECT_FALSE(fs::exists(dir / "1" / particleIndexFileName));
     fs::remove_all(dir);
 }
 
