@@ -1,6 +1,7 @@
 #include "particles/NeighbourList.hpp"
 
 #include "core/Error.hpp"
+#include "core/Parallel.hpp"
 
 #include <algorithm>
 #include <string>
@@ -36,6 +37,14 @@ bool NeighbourList::symmetric() const {
                 return false;
         }
     return true;
+}
+
+void NeighbourList::sortRowsBy(const std::int64_t* key) {
+    const std::size_t rows = size();
+    parallelForWork(rows, indices_.size(), [&](std::size_t i) {
+        std::sort(indices_.begin() + std::ptrdiff_t(offsets_[i]), indices_.begin() + std::ptrdiff_t(offsets_[i + 1]),
+                  [&](Index a, Index b) { return key[a] < key[b] || (key[a] == key[b] && a < b); });
+    });
 }
 
 }  // namespace mfdyn

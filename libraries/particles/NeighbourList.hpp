@@ -44,6 +44,13 @@ public:
         indices_.clear();
     }
 
+    // Each row ordered by key[j], then by j where keys tie: an order that does not depend on how
+    // the particles are numbered, so that sums over a row come out the same to the bit whatever
+    // the numbering (key: the global ids; the decomposition over ranks numbers particles
+    // otherwise than one process, and mirror images share their source's id, the tie-break by
+    // index keeps a source's images in the order they were made).
+    void sortRowsBy(const std::int64_t* key);
+
     // Exact equality of offsets and indices: the test of thread-count determinism.
     bool operator==(const NeighbourList&) const = default;
 

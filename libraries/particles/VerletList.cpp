@@ -22,6 +22,7 @@ bool VerletList<Dim>::update(const std::vector<Vector<Dim>>& positions,
                     std::to_string(positions.size()) + " particles");
     if (!needsRebuild(positions, supportRadius.data(), false)) return false;
     rebuild(positions, supportRadius.data(), false);
+    if (rowKey_) candidates_.sortRowsBy(rowKey_->data());
     return true;
 }
 
@@ -29,6 +30,7 @@ template <int Dim>
 bool VerletList<Dim>::update(const std::vector<Vector<Dim>>& positions, double supportRadius) {
     if (!needsRebuild(positions, &supportRadius, true)) return false;
     rebuild(positions, &supportRadius, true);
+    if (rowKey_) candidates_.sortRowsBy(rowKey_->data());
     return true;
 }
 

@@ -47,6 +47,10 @@ public:
     }
 
     const NeighbourList& candidates() const { return candidates_; }
+    // After every rebuild, order each row by key (NeighbourList::sortRowsBy; the vector is read
+    // at each rebuild, so it may grow with ghosts): sums over rows then do not depend on how the
+    // particles are numbered or when the list was built. nullptr: cell order (the default).
+    void orderRowsBy(const std::vector<std::int64_t>* key) { rowKey_ = key; }
     double skin() const { return skin_; }
     VerletPolicy policy() const { return policy_; }
     std::size_t rebuildCount() const { return rebuilds_; }
@@ -75,6 +79,7 @@ private:
     std::vector<double> builtRadius_;
     double builtMaxRadius_ = 0.0;
     std::uint64_t trackedVersion_ = 0;  // see track()
+    const std::vector<std::int64_t>* rowKey_ = nullptr;  // see orderRowsBy()
     // Scratch of the checked policy, kept between updates.
     std::vector<double> displacement_;
     std::vector<NeighbourList::Index> fastParticles_;

@@ -444,6 +444,11 @@ void SphSolver<Dim>::updateNeighbours() {
         verlet_ =
             std::make_unique<VerletList<Dim>>(skin, NeighbourDomain<Dim>{}, NeighbourSearchOptions{},
                                               checked ? VerletPolicy::checked : VerletPolicy::displacement);
+        // Rows in global-id order: every sum over neighbours is then the same to the bit on any
+        // number of ranks (whose numbering and cells differ) and whenever the list was rebuilt
+        // (issue 21: a stiff equation of state turns the last bits of the density into 1e-12 of
+        // the pressure).
+        verlet_->orderRowsBy(&particles_->globalId());
     }
     // Particles appended or removed (preStep) invalidate the list. Ghosts change the version at
     // every step (added, then cleared): with a kept layer addGhosts() watches the version itself
