@@ -10,7 +10,6 @@
 #include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 #include <optional>
 #include <sstream>
 
@@ -63,8 +62,7 @@ bool wellConditioned(const Eigen::Matrix<double, N, N>& m) {
 
 template <int Dim>
 void throwFirstFailure(const std::vector<unsigned char>& failure, const std::vector<Vector<Dim>>& X,
-                       const NeighbourList& list, double h, double support,
-                       const std::vector<std::size_t>& original) {
+                       const NeighbourList& list, double h, double support) {
     const auto it = std::find_if(failure.begin(), failure.end(), [](unsigned char f) { return f != none; });
     if (it == failure.end()) return;
     const std::size_t a = std::size_t(it - failure.begin());
@@ -89,9 +87,8 @@ void throwFirstFailure(const std::vector<unsigned char>& failure, const std::vec
             break;
     }
     std::ostringstream msg;
-    msg << "ReferenceOperators: particle " << (original.empty() ? a : original[a])
-        << " at X = " << pointText<Dim>(X[a]) << " " << what << " (" << list.rowSize(a)
-        << " neighbours within " << support << " = supportRadius(h = " << h << ")";
+    msg << "ReferenceOperators: particle " << a << " at X = " << pointText<Dim>(X[a]) << " " << what << " ("
+        << list.rowSize(a) << " neighbours within " << support << " = supportRadius(h = " << h << ")";
     if (count > 1) msg << "; " << count - 1 << " more particles fail alike";
     msg << "). Too few neighbours, or all on a line or plane: increase h relative to the particle spacing"
            " (h = 1.2-1.3 dx is usual), or remove isolated particles.";
@@ -117,30 +114,6 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
                         " at X = " + pointText<Dim>(X_[a]) + " has volume " + std::to_string(volume_[a]) +
                         "; volumes must be positive");
     if (n == 0) return;
-    // Options::order: the points sorted by their keys, so that the rows (sorted by index) follow
-    // the keys; relabel() restores the caller's numbering at the end.
-    std::vector<std::size_t> original;
-    if (!options_.order.empty()) {
-        const auto& key = options_.order;
-        if (key.size() != n)
-            throw Error("ReferenceOperators: " + std::to_string(key.size()) + " order keys for " +
-                        std::to_string(n) + " particles");
-        original.resize(n);
-        std::iota(original.begin(), original.end(), std::size_t(0));
-        std::sort(original.begin(), original.end(),
-                  [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
-        for (std::size_t s = 1; s < n; ++s)
-            if (key[original[s]] == key[original[s - 1]])
-                throw Error("ReferenceOperators: particles " + std::to_string(original[s - 1]) + " and " +
-                            std::to_string(original[s]) + " have the same order key " +
-                            std::to_string(key[original[s]]));
-        std::vector<Vector<Dim>> sortedX(n);
-        std::vector<double> sortedVolume(n);
-        for (std::size_t s = 0; s < n; ++s)
-            sortedX[s] = X_[original[s]], sortedVolume[s] = volume_[original[s]];
-        X_ = std::move(sortedX);
-        volume_ = std::move(sortedVolume);
-    }
 
     const double support = kernel.supportRadius(h);
     NeighbourSearchOptions searchOptions;
@@ -149,6 +122,14 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
     searchOptions.sortRows = true;  // the mirror look-up below bisects rows
     NeighbourSearch<Dim> search({}, searchOptions);
     list_ = search.build(X_, support);
+    // Options::order: every row in increasing key (the bisection below compares keys).
+    const std::int64_t* key = options_.order.empty() ? nullptr : options_.order.data();
+    if (key) {
+        if (options_.order.size() != n)
+            throw Error("ReferenceOperators: " + std::to_string(options_.order.size()) + " order keys for " +
+                        std::to_string(n) + " particles");
+        list_.sortRowsBy(key);
+    }
 
     const auto& offsets = list_.offsets();
     const auto& indices = list_.indices();
@@ -160,10 +141,9 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
     std::vector<char> active(n, 1);
     if (options_.interior < n) {
         std::fill(active.begin(), active.end(), 0);
-        for (std::size_t s = 0; s < n; ++s) {
-            if ((original.empty() ? s : original[s]) >= options_.interior) continue;
-            active[s] = 1;
-            for (const NeighbourList::Index b : list_[s]) active[b] = 1;
+        for (std::size_t a = 0; a < options_.interior; ++a) {
+            active[a] = 1;
+            for (const NeighbourList::Index b : list_[a]) active[b] = 1;
         }
     }
 
@@ -191,14 +171,18 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
             const std::size_t b = indices[k];
             const auto begin = indices.begin() + std::ptrdiff_t(offsets[b]);
             const auto end = indices.begin() + std::ptrdiff_t(offsets[b + 1]);
-            const auto it = std::lower_bound(begin, end, NeighbourList::Index(a));
+            const auto it = key ? std::lower_bound(begin, end, NeighbourList::Index(a),
+                                                   [&](NeighbourList::Index x, NeighbourList::Index y) {
+                                                       return key[x] < key[y] || (key[x] == key[y] && x < y);
+                                                   })
+                                : std::lower_bound(begin, end, NeighbourList::Index(a));
             if (it == end || *it != a)
                 failure[a] = asymmetric;
             else
                 mirror_[k] = std::size_t(it - indices.begin());
         }
     });
-    throwFirstFailure<Dim>(failure, X_, list_, h, support, original);
+    throwFirstFailure<Dim>(failure, X_, list_, h, support);
 
     // Plain kernel gradients grad W_b(X_a) and values W_b(X_a) per pair.
     std::vector<Vector<Dim>> plainGradient(pairs);
@@ -240,7 +224,7 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
             beta[a] = be;
             alpha[a] = 1.0 / sum;
         });
-        throwFirstFailure<Dim>(failure, X_, list_, h, support, original);
+        throwFirstFailure<Dim>(failure, X_, list_, h, support);
         if (options_.correctedKernel) {
             correctedKernel_.assign(pairs, 0.0);
             correctedKernelSelf_.assign(n, 0.0);
@@ -290,7 +274,7 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
         const Tensor<Dim> L = M.inverse();
         for (std::size_t k = k0; k < k1; ++k) gradient_[k] = L * gradient_[k];
     });
-    throwFirstFailure<Dim>(failure, X_, list_, h, support, original);
+    throwFirstFailure<Dim>(failure, X_, list_, h, support);
 
     gradientAtNeighbour_.resize(pairs);
     parallelFor(n, [&](std::size_t a) {
@@ -342,46 +326,8 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
                     (laplacian_[k] + c.template head<Dim>().dot(s) + c(Dim) * s.squaredNorm()) * invH2;
             }
         });
-        throwFirstFailure<Dim>(failure, X_, list_, h, support, original);
+        throwFirstFailure<Dim>(failure, X_, list_, h, support);
     }
-    if (!original.empty()) relabel(original);
-}
-
-template <int Dim>
-void ReferenceOperators<Dim>::relabel(const std::vector<std::size_t>& original) {
-    const std::size_t n = original.size(), pairs = list_.pairCount();
-    std::vector<std::size_t> place(n);
-    for (std::size_t s = 0; s < n; ++s) place[original[s]] = s;
-    const auto& oldOffsets = list_.offsets();
-    const auto& oldIndices = list_.indices();
-    std::vector<std::size_t> offsets(n + 1, 0);
-    for (std::size_t i = 0; i < n; ++i) offsets[i + 1] = offsets[i] + list_.rowSize(place[i]);
-    std::vector<std::size_t> newPair(pairs);  // a sorted pair's place in the caller's numbering
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < list_.rowSize(place[i]); ++j)
-            newPair[oldOffsets[place[i]] + j] = offsets[i] + j;
-    std::vector<NeighbourList::Index> indices(pairs);
-    std::vector<std::size_t> mirror(pairs);
-    for (std::size_t k = 0; k < pairs; ++k) {
-        indices[newPair[k]] = NeighbourList::Index(original[oldIndices[k]]);
-        mirror[newPair[k]] = newPair[mirror_[k]];
-    }
-    auto perPair = [&](auto& v) {
-        if (v.empty()) return;
-        auto out = v;
-        for (std::size_t k = 0; k < pairs; ++k) out[newPair[k]] = v[k];
-        v = std::move(out);
-    };
-    auto perPoint = [&](auto& v) {
-        if (v.empty()) return;
-        auto out = v;
-        for (std::size_t s = 0; s < n; ++s) out[original[s]] = v[s];
-        v = std::move(out);
-    };
-    perPair(gradient_), perPair(gradientAtNeighbour_), perPair(laplacian_), perPair(correctedKernel_);
-    perPoint(X_), perPoint(volume_), perPoint(correctedKernelSelf_);
-    mirror_ = std::move(mirror);
-    list_ = NeighbourList(std::move(offsets), std::move(indices));
 }
 
 template <int Dim>

@@ -94,7 +94,8 @@ public:
         bool correctedKernel = false;  // W~ values (for interpolation / Lagrange-multiplier BCs)
         // Rows of points [0, interior) and of their neighbours are computed (default: all).
         std::size_t interior = std::size_t(-1);
-        // One distinct key per point: rows in increasing key instead of index (empty: index).
+        // A key per point: rows in increasing key, then index (NeighbourList::sortRowsBy) instead
+        // of index alone (empty).
         std::vector<std::int64_t> order;
     };
 
@@ -135,9 +136,6 @@ public:
 
 private:
     void checkSize(std::size_t n, const char* what) const;
-    // Back from the points sorted by Options::order to the caller's numbering: original[s] is the
-    // caller's index of sorted point s; every row keeps its order.
-    void relabel(const std::vector<std::size_t>& original);
 
     std::vector<Vector<Dim>> X_;
     std::vector<double> volume_;
