@@ -1366,12 +1366,14 @@ std::vector<std::string> TlSphSolver<Dim>::summary(double loopSeconds) const {
     }
     if (decomposition_) {
         // The communication of a stage (bench/mpi's weak-scaling model): the halo is refreshed
-        // once per stage with haloFields_, plus L[p], L[J] where the dissipation reads them.
+        // once per stage with haloFields_ (a message each, globalId first), plus L[p], L[J] where
+        // the dissipation reads them; the set-up's halo is counted in.
         const double ranks = globalSum(1.0);
         const double halo = globalSum(double(haloSize_));
         const double bytes = globalSum(double(decomposition_->bytesSent()));
         const double messages = globalSum(double(decomposition_->messagesSent()));
-        const double refreshes = globalSum(double(decomposition_->refreshes())) / std::max(1.0, ranks);
+        // Stages run: every stage adds the owned rows' pairs to pairInteractions_.
+        const double stages = pairs > 0 ? std::round(interactions / pairs) : 0.0;
         std::snprintf(
             line, sizeof line,
             "decomposition        %.0f ranks (%s), cut once in X; halo %.0f particles (%.3g of the owned), "
@@ -1380,8 +1382,9 @@ std::vector<std::string> TlSphSolver<Dim>::summary(double loopSeconds) const {
         lines.push_back(line);
         std::snprintf(
             line, sizeof line,
-            "halo traffic         %.4g bytes per owned particle, %.3g messages per rank, in %.0f refreshes",
-            owned > 0 ? bytes / owned : 0.0, messages / std::max(1.0, ranks), refreshes);
+            "halo traffic         %.4g bytes per particle and %.3g messages per rank per stage (%.0f stages)",
+            owned > 0 && stages > 0 ? bytes / owned / stages : 0.0,
+            stages > 0 ? messages / ranks / stages : 0.0, stages);
         lines.push_back(line);
     }
     return lines;
