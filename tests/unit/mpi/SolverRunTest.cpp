@@ -2,8 +2,7 @@
 // particles.pvd, the CSV files), each write is a time in pieces listed as <time>/particles.pvtp,
 // a restart reads those pieces, and a signal that reaches one rank stops every rank after the
 // same step. The method is the drift of tests/unit/solver/DriftSolverTest.cpp (x = x0 + v t,
-// exact), each rank keeping the particles whose id it is dealt (id % ranks == rank), as the
-// decomposition will.
+// exact), each rank holding the share SolverRun's decomposition gives it.
 #include "core/Application.hpp"
 #include "core/CaseLock.hpp"
 #include "core/Communicator.hpp"
@@ -35,20 +34,13 @@ namespace fs = std::filesystem;
 int sigtermOnRank1AfterStep = -1;
 
 template <int Dim>
-std::unique_ptr<ParticleSet<Dim>> keepShare(std::unique_ptr<ParticleSet<Dim>> particles) {
-    std::vector<std::size_t> mine;
-    for (std::size_t i = 0; i < particles->size(); ++i)
-        if (particles->globalId()[i] % Communicator::size() == Communicator::rank()) mine.push_back(i);
-    particles->keep(mine);
-    return particles;
-}
-
-template <int Dim>
 class DriftShare final : public Solver {
 public:
+    // SolverRun's decomposition has kept this rank's share of the particles already.
+    static constexpr bool runsOnSeveralRanks = true;
     explicit DriftShare(SolverRun& run)
         : Solver(run),
-          owner_(keepShare(adoptParticleSet<Dim>(run.takeParticles()))),
+          owner_(adoptParticleSet<Dim>(run.takeParticles())),
           properties_(openConstant("driftProperties")),
           lengthScale_(properties_.get<double>("lengthScale")),
           x_(owner_->position()),
