@@ -1,5 +1,7 @@
 #include "boundaryConditions/Plane.hpp"
 
+#include "core/Parallel.hpp"
+
 #include <cmath>
 
 namespace mfdyn {
@@ -25,13 +27,15 @@ Plane<Dim>::Plane(const KeywordValues& values, const std::vector<Vector<Dim>>& p
     normal_ /= length;
     if (auto tolerance = values.optionalScalar("tolerance")) {
         tolerance_ = *tolerance;
-    } else if (!positions.empty()) {
-        Vector<Dim> lo = positions.front(), hi = positions.front();
-        for (const auto& x : positions) {
-            lo = lo.cwiseMin(x);
-            hi = hi.cwiseMax(x);
+    } else {
+        // The box of the whole body: every rank's part of it (global reductions: the same
+        // tolerance on every rank; none with no particle anywhere).
+        Vector<Dim> lo, hi;
+        for (int d = 0; d < Dim; ++d) {
+            lo[d] = GlobalReduce::min(positions.size(), [&](std::size_t i) { return positions[i][d]; });
+            hi[d] = GlobalReduce::max(positions.size(), [&](std::size_t i) { return positions[i][d]; });
         }
-        tolerance_ = 1e-9 * (hi - lo).norm();
+        if (lo.allFinite() && hi.allFinite()) tolerance_ = 1e-9 * (hi - lo).norm();
     }
 }
 

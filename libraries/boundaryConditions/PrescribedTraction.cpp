@@ -19,6 +19,8 @@
 // A selection is required (the loaded face); the particle set needs the fields mass and density.
 #include "boundaryConditions/PrescribedTraction.hpp"
 
+#include "core/Parallel.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -50,7 +52,7 @@ PrescribedTraction<Dim>::PrescribedTraction(const KeywordValues& values, const P
                          "prescribedTraction shares the force by particle volume, mass/density: the "
                          "particles need the fields `mass` and `density`");
     const auto& id = particles.globalId();
-    double total = 0;
+    double mine = 0;
     for (const std::size_t i : this->selection_.indices()) {
         const double v = (*mass)[i] / (*density)[i];
         if (!(v > 0.0) || !std::isfinite(v))
@@ -59,8 +61,10 @@ PrescribedTraction<Dim>::PrescribedTraction(const KeywordValues& values, const P
         indices_.push_back(i);
         ids_.push_back(id[i]);
         share_.push_back(v);
-        total += v;
+        mine += v;
     }
+    // The loaded face's whole volume, over every rank's part of it (summed in order here, as ever).
+    const double total = globalSum(mine);
     for (double& s : share_) s *= area_ / total;
 }
 

@@ -46,7 +46,8 @@ SkewSymmetricPlane<Dim>::SkewSymmetricPlane(const KeywordValues& values, const P
             indices_.push_back(i);
             ids_.push_back(id[i]);
         }
-    if (indices_.empty() && !this->selection_.indices().empty())
+    // On any rank: the plane may lie in another rank's part of the body.
+    if (globalSum(double(indices_.size())) == 0 && globalSum(double(this->selection_.indices().size())) > 0)
         throw values.error("point",
                            "no selected particle lies on the plane (|signed distance| <= tolerance " +
                                std::to_string(plane_.tolerance()) +

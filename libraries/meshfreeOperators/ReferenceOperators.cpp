@@ -122,12 +122,30 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
     searchOptions.sortRows = true;  // the mirror look-up below bisects rows
     NeighbourSearch<Dim> search({}, searchOptions);
     list_ = search.build(X_, support);
+    // Options::order: every row in increasing key (the bisection below compares keys).
+    const std::int64_t* key = options_.order.empty() ? nullptr : options_.order.data();
+    if (key) {
+        if (options_.order.size() != n)
+            throw Error("ReferenceOperators: " + std::to_string(options_.order.size()) + " order keys for " +
+                        std::to_string(n) + " particles");
+        list_.sortRowsBy(key);
+    }
 
     const auto& offsets = list_.offsets();
     const auto& indices = list_.indices();
     const std::size_t pairs = list_.pairCount();
     const KernelEvaluator<Dim> W = kernel.evaluator<Dim>();
     std::vector<unsigned char> failure(n, none);
+
+    // The rows computed (Options::interior): the interior points' and their neighbours'.
+    std::vector<char> active(n, 1);
+    if (options_.interior < n) {
+        std::fill(active.begin(), active.end(), 0);
+        for (std::size_t a = 0; a < options_.interior; ++a) {
+            active[a] = 1;
+            for (const NeighbourList::Index b : list_[a]) active[b] = 1;
+        }
+    }
 
     // The order-1 least-squares gradient on the reference rows (difference form), with failures
     // flagged so that they are reported below in this class's words. Same threshold as the
@@ -147,12 +165,17 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
     // Mirror pairs: the list is symmetric (one support radius), so a is in row b.
     mirror_.assign(pairs, 0);
     parallelFor(n, [&](std::size_t a) {
+        if (!active[a]) return;
         if (list_.rowSize(a) == 0) failure[a] = noNeighbours;
         for (std::size_t k = offsets[a]; k < offsets[a + 1]; ++k) {
             const std::size_t b = indices[k];
             const auto begin = indices.begin() + std::ptrdiff_t(offsets[b]);
             const auto end = indices.begin() + std::ptrdiff_t(offsets[b + 1]);
-            const auto it = std::lower_bound(begin, end, NeighbourList::Index(a));
+            const auto it = key ? std::lower_bound(begin, end, NeighbourList::Index(a),
+                                                   [&](NeighbourList::Index x, NeighbourList::Index y) {
+                                                       return key[x] < key[y] || (key[x] == key[y] && x < y);
+                                                   })
+                                : std::lower_bound(begin, end, NeighbourList::Index(a));
             if (it == end || *it != a)
                 failure[a] = asymmetric;
             else
@@ -165,6 +188,7 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
     std::vector<Vector<Dim>> plainGradient(pairs);
     std::vector<double> value(pairs);
     parallelFor(n, [&](std::size_t a) {
+        if (!active[a]) return;
         for (std::size_t k = offsets[a]; k < offsets[a + 1]; ++k) {
             const Vector<Dim> r = X_[a] - X_[indices[k]];
             const double d = r.norm();
@@ -187,6 +211,7 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
         // least-squares gradient weights with w_ab = V_b W_b(X_a) (r_ab = -(X_b - X_a)).
         const LeastSquares kernelFit = leastSquaresGradient(LeastSquares::KernelWeight::value);
         parallelFor(n, [&](std::size_t a) {
+            if (!active[a]) return;
             if (kernelFit.status()[a] != LeastSquares::Status::ok) {
                 failure[a] = kernelMatrix;
                 return;
@@ -217,6 +242,7 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
         correctedFit.emplace(leastSquaresGradient(LeastSquares::KernelWeight::radialDerivative));
     gradient_.assign(pairs, Vector<Dim>::Zero());
     parallelFor(n, [&](std::size_t a) {
+        if (!active[a]) return;
         const std::size_t k0 = offsets[a], k1 = offsets[a + 1];
         if (options_.gradient == GradientCorrection::uncorrected) {
             for (std::size_t k = k0; k < k1; ++k) gradient_[k] = plainGradient[k];
@@ -252,6 +278,7 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
 
     gradientAtNeighbour_.resize(pairs);
     parallelFor(n, [&](std::size_t a) {
+        if (!active[a]) return;
         for (std::size_t k = offsets[a]; k < offsets[a + 1]; ++k)
             gradientAtNeighbour_[k] = gradient_[mirror_[k]];
     });
@@ -264,6 +291,7 @@ ReferenceOperators<Dim>::ReferenceOperators(const std::vector<Vector<Dim>>& X,
         const double step = 1e-4 * h;
         laplacian_.assign(pairs, 0.0);
         parallelFor(n, [&](std::size_t a) {
+            if (!active[a]) return;
             const std::size_t k0 = offsets[a], k1 = offsets[a + 1];
             Matrix A = Matrix::Zero();
             Column rhs = Column::Zero();

@@ -54,12 +54,24 @@
 //
 // Everything is computed in gather loops over rows (parallelFor): results are bit-identical for
 // any thread count.
+//
+// A rank's share of a distributed body (issue 21; TlSphSolver): the points are its owned
+// particles [0, interior), a halo of other ranks' particles and mirror images, the latter two
+// cut off where the rank's reach ends. Options::interior says so: operators are computed (and
+// their failures reported) only in the rows of the interior points and of their neighbours,
+// which a gather over an interior row reads (gradientAtNeighbour, the Laplacian at mirror());
+// the other rows keep their neighbours but zero weights. Options::order gives every point a key
+// (the global id, the images after the real particles in the order a serial run makes them):
+// each row lists its neighbours in increasing key, as the serial run's rows list them by index,
+// so every sum over a row adds the same terms in the same order, and a halo two supports deep
+// gives the interior and first-ring rows the serial run's bits.
 #include "core/Dictionary.hpp"
 #include "core/Tensor.hpp"
 #include "kernels/Kernel.hpp"
 #include "particles/NeighbourList.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -80,6 +92,11 @@ public:
         GradientCorrection gradient = GradientCorrection::corrected;
         bool laplacian = true;         // corrected Laplacian weights (App. A)
         bool correctedKernel = false;  // W~ values (for interpolation / Lagrange-multiplier BCs)
+        // Rows of points [0, interior) and of their neighbours are computed (default: all).
+        std::size_t interior = std::size_t(-1);
+        // A key per point: rows in increasing key, then index (NeighbourList::sortRowsBy) instead
+        // of index alone (empty).
+        std::vector<std::int64_t> order;
     };
 
     // X: reference positions; volume: V_a; h: uniform smoothing length; kernel: any Kernel, support
@@ -87,7 +104,8 @@ public:
     ReferenceOperators(const std::vector<Vector<Dim>>& X, const std::vector<double>& volume, double h,
                        const Kernel& kernel, Options options);
 
-    // Neighbours b != a with |X_a - X_b| < support, rows sorted by index; k indexes pairs.
+    // Neighbours b != a with |X_a - X_b| < support, rows sorted by index (by Options::order when
+    // given); k indexes pairs.
     const NeighbourList& neighbours() const { return list_; }
     std::size_t size() const { return X_.size(); }
     const std::vector<Vector<Dim>>& referencePositions() const { return X_; }

@@ -51,10 +51,15 @@ Decomposition::Decomposition(const Settings& settings, int dimension)
 
 Decomposition::~Decomposition() = default;
 
-std::vector<double> Decomposition::coordinates(const ParticleSetBase& particles) const {
+std::vector<double> Decomposition::coordinates(const ParticleSetBase& particles,
+                                               const std::string& field) const {
     const std::size_t n = particles.ownedCount();
-    const auto* x = static_cast<const double*>(particles.field("position").data());
+    const auto* x = static_cast<const double*>(particles.field(field).data());
     return std::vector<double>(x, x + n * std::size_t(dimension_));
+}
+
+std::string Decomposition::cutField(const ParticleSetBase& particles) {
+    return particles.hasField("referencePosition") ? "referencePosition" : "position";
 }
 
 void Decomposition::distribute(ParticleSetBase& particles, const std::string& source) {
@@ -71,8 +76,8 @@ void Decomposition::distribute(ParticleSetBase& particles, const std::string& so
     particles.keep(block);  // the next global id stays that of the whole set, on every rank
     const std::vector<double> ones(particles.ownedCount(), 1.0);
     const auto& id = particles.requireField<std::int64_t>("globalId");
-    const std::vector<int> destination =
-        partitioner_->partition(coordinates(particles), ones, std::vector<std::int64_t>(id.begin(), id.end()));
+    const std::vector<int> destination = partitioner_->partition(
+        coordinates(particles, cutField(particles)), ones, std::vector<std::int64_t>(id.begin(), id.end()));
     sendTo(particles, destination);
     ++rebalances_;
 }
@@ -153,12 +158,12 @@ void Decomposition::sortByGlobalId(ParticleSetBase& particles) const {
     particles.reorder(order);
 }
 
-void Decomposition::planHalo(const ParticleSetBase& particles, double width) {
+void Decomposition::planHalo(const ParticleSetBase& particles, double width, const std::string& coordinates) {
     width_ = width;
     const int me = Communicator::rank();
     const std::size_t ranks = std::size_t(Communicator::size());
     const std::size_t n = particles.ownedCount();
-    const auto* x = static_cast<const double*>(particles.field("position").data());
+    const auto* x = static_cast<const double*>(particles.field(coordinates).data());
     std::vector<std::vector<std::size_t>> perRank(ranks);
     double lo[3], hi[3];
     for (std::size_t i = 0; i < n; ++i) {

@@ -33,7 +33,11 @@ public:
 
     // Collective. Every rank holds the whole set (read from the time directory): keeps this
     // rank's share of a first partition (weight 1 per particle). InputError when the set has
-    // fewer particles than there are ranks (`source`: the file, for the message).
+    // fewer particles than there are ranks (`source`: the file, for the message). The cut is of
+    // the reference configuration when the set carries one (`referencePosition`: a
+    // total-Lagrangian method's restart, whose neighbourhoods and so its halo live there; at a
+    // fresh start x = X), else of the positions.
+    static std::string cutField(const ParticleSetBase& particles);
     void distribute(ParticleSetBase& particles, const std::string& source);
     // Collective, with no ghosts in the set. Owned particles outside this rank's part go to
     // their owners, every field with them; first a new partition when the weighted imbalance
@@ -42,8 +46,10 @@ public:
     bool migrate(ParticleSetBase& particles, const std::vector<double>& weights);
     // Collective. The owned particles each other rank needs: those whose box x ± width meets
     // that rank's part (width: the largest interaction radius plus the skin the caller moves
-    // within before it migrates again).
-    void planHalo(const ParticleSetBase& particles, double width);
+    // within before it migrates again). `coordinates`: the vector field x is read from, the
+    // one the parts were cut in (a total-Lagrangian method's halo is planned once, in X).
+    void planHalo(const ParticleSetBase& particles, double width,
+                  const std::string& coordinates = "position");
     // Appends the halo as ghosts and fills the named fields (globalId always). Returns the
     // number of halo particles.
     std::size_t appendHalo(ParticleSetBase& particles, const std::vector<std::string>& fields) const;
@@ -64,7 +70,8 @@ public:
 private:
     void sendTo(ParticleSetBase& particles, const std::vector<int>& destination);
     void sortByGlobalId(ParticleSetBase& particles) const;
-    std::vector<double> coordinates(const ParticleSetBase& particles) const;
+    std::vector<double> coordinates(const ParticleSetBase& particles,
+                                    const std::string& field = "position") const;
 
     Settings settings_;
     int dimension_;

@@ -162,7 +162,11 @@ void SolverRun::decompose(const std::string& particleFile) {
     }
     decomposition_ = std::make_unique<Decomposition>(settings, particles_->dimension());
     decomposition_->distribute(*particles_, particleFile);
-    Log::info("Decomposed over " + std::to_string(Communicator::size()) + " ranks (" + settings.method + ")");
+    Log::info("Decomposed over " + std::to_string(Communicator::size()) + " ranks (" + settings.method +
+              (Decomposition::cutField(*particles_) == "referencePosition"
+                   ? ", cut in the reference configuration"
+                   : "") +
+              ")");
 }
 
 SolverRun::~SolverRun() = default;

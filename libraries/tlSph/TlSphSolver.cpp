@@ -55,6 +55,26 @@
 // Below three dimensions the body is in plane strain (2D) or uniaxial strain (1D): F is embedded
 // in 3x3 with unit out-of-plane stretch, H's out-of-plane diagonal is that of cof(F) (in plane
 // strain H_zz = det F_2D exactly), and the laws see 3x3 tensors.
+//
+// Several ranks (issue 21). Neighbourhoods are of X and never change, so the body is cut once, in
+// X (Decomposition::distribute cuts by referencePosition when the file carries it), nothing
+// migrates, and the halo is planned once. Its depth is two supports 2R: the pair loop of an owned
+// particle a reads, at each neighbour b (within R), b's own corrected gradient g_ba and its
+// Laplacian weight at a (the corrections of b's row), and the dissipation reads L[p]_b, L[J]_b;
+// all of b's row lies within 2R of a. So the operators are built over [owned][halo][images] with
+// the rows of the owned particles and of their neighbours computed (ReferenceOperators::Options::
+// interior), each row in the serial run's order (Options::order: global ids, then the images in
+// the order a serial run makes them), which gives every pair sum the serial run's bits. The one
+// support deep alternative, the halo rows' correction data exchanged, cannot give those bits at
+// the images: an image's row is its own sum over the extended body, not its source's row mirrored.
+// The images are made from owned and halo sources, sorted by global id (so that they come in the
+// serial order); an image within 2R of an owned particle has its source within 2R too (a
+// reflection through a plane with both on the body's side only lengthens the distance, and so do
+// the orthogonal planes' images of images). Each stage the halo is appended with what the pair
+// loops read at b (v, P, rho0, J), then the images; L[p], L[J] and the kinematic flags are
+// refreshed from their owners (imagesOf, updateKinematic). Every figure the ranks share (time
+// step, projections, energies, health) is a global reduction over the owned particles; the
+// Lagrange-multiplier projection, one system over every constrained particle, is refused.
 #include "tlSph/TlSphSolver.hpp"
 
 #include "boundaryConditions/Fixed.hpp"
@@ -62,6 +82,7 @@
 #include "core/Log.hpp"
 #include "core/Parallel.hpp"
 #include "materials/Embedding.hpp"
+#include "particles/Decomposition.hpp"
 #include "solver/BodyForce.hpp"
 #include "solver/InitialState.hpp"
 #include "solver/MaterialAssignment.hpp"
@@ -77,6 +98,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <numeric>
 #include <sstream>
 
 namespace mfdyn {
@@ -185,6 +207,7 @@ TlSphSolver<Dim>::TlSphSolver(SolverRun& run)
       m_(requireScalarField(*particles_, "mass", "particle masses")),
       rho0_(requireScalarField(*particles_, "density", "the reference density rho0")) {
     declarePhases({"computeStress", "computeRates", "dissipation", "projections", "integrate"});
+    decomposition_ = run.decomposition();
     if (settings_.given("projection")) {
         const KeywordValues& projection = settings_.nested("projection");
         projectMomentum_ = projection.flag("momentum");
@@ -376,8 +399,8 @@ void TlSphSolver<Dim>::initialiseFields() {
     }
 
     // Spacing (h_min of the paper) and smoothing length.
-    double largest = 0;
-    for (double v : V_) largest = std::max(largest, v);
+    // Over every rank: the spacing sets h, which must be one for the whole body.
+    const double largest = std::max(0.0, GlobalReduce::max(n, [&](std::size_t i) { return V_[i]; }));
     spacing_ = settings_.optionalScalar("spacing").value_or(std::pow(largest, 1.0 / Dim));
     if (!(spacing_ > 0))  // the default of a set with no volume (the schema checks a given one)
         throw properties_.error("", "the particle spacing " + formatKeywordNumber(spacing_) +
@@ -390,11 +413,28 @@ void TlSphSolver<Dim>::initialiseFields() {
     // The boundary conditions pick their particles from the initial state (skewSymmetricPlane
     // from the reference positions), so they are built after it.
     boundaries_ = readBoundaryConditions(*particles_);
+    const std::string& essential = settings_.word("essentialBoundaryConditions");
+    const bool lagrangeMultiplier = essential == "lagrangeMultiplier" && !boundaries_.empty();
+    if (lagrangeMultiplier && decomposition_)
+        throw properties_.error(
+            "essentialBoundaryConditions",
+            "lagrangeMultiplier solves one system over the constrained particles of every "
+            "rank and does not run on several ranks (issue 21); valid choices on several "
+            "ranks: direct");
+    if (decomposition_) {
+        // Set-up's halo: X, m, rho0 of the other ranks' particles within two supports (the
+        // header: why two), for the volumes, the images and the operators; cleared below.
+        decomposition_->planHalo(*particles_, 2.0 * kernel_->supportRadius(h_) * (1.0 + 1e-9),
+                                 "referencePosition");
+        haloSize_ = decomposition_->appendHalo(*particles_, {"referencePosition", "mass", "density"});
+        V_.resize(n + haloSize_);
+        for (std::size_t i = n; i < n + haloSize_; ++i) V_[i] = m_[i] / rho0_[i];
+        haloFields_ = {"velocity", "firstPiolaStress", "density"};
+        if (J_) haloFields_.push_back("jacobian");
+    }
     makeMirrorGhosts();
     typename ReferenceOperators<Dim>::Options options;
     options.laplacian = true;
-    const std::string& essential = settings_.word("essentialBoundaryConditions");
-    const bool lagrangeMultiplier = essential == "lagrangeMultiplier" && !boundaries_.empty();
     if (lagrangeMultiplier && !ghosts_.empty())
         throw properties_.error(
             "essentialBoundaryConditions",
@@ -415,9 +455,20 @@ void TlSphSolver<Dim>::initialiseFields() {
         Log::info("gradient " + gradientCorrectionName(options.gradient) + " (default" +
                   (lagrangeMultiplier ? " with essentialBoundaryConditions lagrangeMultiplier)" : ")"));
     Stopwatch watch;
-    std::vector<Vector<Dim>> Xall(*X_);
+    std::vector<Vector<Dim>> Xall(*X_);  // owned, then the halo
     Xall.insert(Xall.end(), ghosts_.position.begin(), ghosts_.position.end());
+    if (decomposition_) {
+        // Rows in the serial order: real particles by global id, then the images as made (after
+        // every id: nextGlobalId() is the whole set's on every rank).
+        const auto& ids = particles_->globalId();
+        order_.assign(ids.begin(), ids.end());
+        for (std::size_t g = 0; g < ghosts_.size(); ++g)
+            order_.push_back(particles_->nextGlobalId() + std::int64_t(g));
+        options.order = order_;
+        options.interior = n;
+    }
     operators_ = std::make_unique<ReferenceOperators<Dim>>(Xall, V_, h_, *kernel_, options);
+    particles_->clearGhosts();  // the set-up's halo
     if (lagrangeMultiplier) {
         essentialTime_ = time().value();
         essential_ = std::make_unique<LagrangeMultiplierProjection<Dim>>(
@@ -448,15 +499,25 @@ void TlSphSolver<Dim>::initialiseFields() {
     if (J_ && (model.needsJacobianLaplacian() || model.needsJacobianBiLaplacian())) lapJ_.assign(n, 0.0);
     if (J_ && model.needsJacobianBiLaplacian()) lap2J_.assign(n, 0.0);
 
+    const auto pairs = std::size_t(globalSum(double(operators_->neighbours().offsets()[n])));
+    const auto particles = std::size_t(globalSum(double(n)));
     std::ostringstream s;
     s << "tlSph: formulation " << formulation_.name() << ", kernel " << kernel_->type() << ", spacing "
-      << spacing_ << ", h " << h_ << ", "
-      << operators_->neighbours().offsets()[n] / std::max<std::size_t>(1, n)
+      << spacing_ << ", h " << h_ << ", " << pairs / std::max<std::size_t>(1, particles)
       << " neighbours per particle (reference configuration, " << watch.seconds() << " s), c_p,max " << cpMax_
       << " m/s, dissipation " << dissipationModel_->describe() << ", projections: momentum "
       << (projectMomentum_ ? "yes" : "no") << ", dissipation " << (projectDissipation_ ? "yes" : "no")
       << ", jacobian " << (projectJacobian_ ? "yes" : "no");
     Log::info(s.str());
+    if (decomposition_) {
+        const double halo = globalSum(double(haloSize_));
+        std::ostringstream d;
+        d << "Halo: " << halo << " particles (" << halo / double(std::max<std::size_t>(1, particles))
+          << " of the owned) within two supports " << decomposition_->width() << " m in X, planned once; "
+          << globalSum(double(ghosts_.size())) << " images on all ranks";
+        Log::info(d.str());
+        Log::info(decomposition_->report(*particles_, {}));
+    }
     if (const std::string warning = model.stabilityWarning(courant(), csMax_ / cpMax_, J_ != nullptr);
         !warning.empty())
         Log::warning(warning);
@@ -536,8 +597,20 @@ void TlSphSolver<Dim>::makeMirrorGhosts() {
     // of its source's. The images are of the reference configuration, made once (planes in the
     // order written; images of images make the corners and edges).
     const double depth = 2.0 * kernel_->supportRadius(h_);
-    const std::size_t n = x_.size();
-    ghosts_ = boundaries_.referenceImages(*X_, depth);
+    const std::size_t n = X_->size();  // the real particles: owned, then the halo
+    if (haloSize_ == 0) {
+        ghosts_ = boundaries_.referenceImages(*X_, depth);
+    } else {
+        // The sources in global-id order, as a serial run's, so that the images come in its order.
+        const auto& ids = particles_->globalId();
+        std::vector<std::size_t> byId(n);
+        std::iota(byId.begin(), byId.end(), std::size_t(0));
+        std::sort(byId.begin(), byId.end(), [&](std::size_t a, std::size_t b) { return ids[a] < ids[b]; });
+        std::vector<Vector<Dim>> X(n);
+        for (std::size_t k = 0; k < n; ++k) X[k] = (*X_)[byId[k]];
+        ghosts_ = boundaries_.referenceImages(X, depth);
+        for (std::size_t& source : ghosts_.source) source = byId[source];
+    }
     // A particle on a plane carries half (a quarter on an edge, ...) of its dual cell: the other
     // part is its own image's. In the extended body it is interior, so as a neighbour it counts
     // with its whole cell. (Its own equation is per unit volume and does not change.)
@@ -547,7 +620,8 @@ void TlSphSolver<Dim>::makeMirrorGhosts() {
     for (std::size_t g = 0; g < ghosts_.size(); ++g) V_.push_back(V_[ghosts_.source[g]]);
     // Reactions of the planes reach the body through the ghosts: the internal forces no longer
     // sum to zero over the real particles, and projecting them would remove the reactions.
-    if (!ghosts_.empty() && (projectMomentum_ || projectDissipation_)) {
+    // (Some rank has images: all agree.)
+    if (globalSum(double(ghosts_.size())) > 0 && (projectMomentum_ || projectDissipation_)) {
         projectMomentum_ = projectDissipation_ = false;
         Log::info("Momentum projections off: the symmetry planes' mirror ghosts carry their reactions");
     }
@@ -558,11 +632,14 @@ void TlSphSolver<Dim>::makeMirrorGhosts() {
 
 template <int Dim>
 void TlSphSolver<Dim>::placeGhosts() {
+    // Under MPI the halo first (what the pair loops read at a neighbour), the images after it.
+    if (decomposition_) decomposition_->appendHalo(*particles_, haloFields_);
     if (ghosts_.empty()) return;
     // On the particle set's ghost range for the pair loops of one stage: every field copied from
     // its source (rho0, the material), then what the image changes. The pair loops read v, P, J
     // and rho0; X, F, H and the pressure are mapped too so that the range is a true image; the
-    // plastic state and x keep their source's values (nothing reads them at a ghost).
+    // plastic state and x keep their source's values (nothing reads them at a ghost; nor the
+    // halo's F, H, pressure, which it does not carry).
     const std::size_t n = particles_->addGhosts(ghosts_.source, ghosts_.map);
     parallelFor(ghosts_.size(), [&](std::size_t g) {
         const std::size_t i = n + g, src = ghosts_.source[g];
@@ -579,8 +656,10 @@ void TlSphSolver<Dim>::placeGhosts() {
 template <int Dim>
 template <class T, class Map>
 void TlSphSolver<Dim>::imagesOf(std::vector<T>& field, std::size_t n, Map&& map) const {
-    field.resize(n + ghosts_.size());
-    parallelFor(ghosts_.size(), [&](std::size_t g) { field[n + g] = map(g, field[ghosts_.source[g]]); });
+    const std::size_t real = n + haloSize_;
+    field.resize(real + ghosts_.size());
+    if (decomposition_) decomposition_->refresh(field.data(), sizeof(T), n);
+    parallelFor(ghosts_.size(), [&](std::size_t g) { field[real + g] = map(g, field[ghosts_.source[g]]); });
 }
 
 template <int Dim>
@@ -817,37 +896,48 @@ void TlSphSolver<Dim>::updateKinematic(double t) {
     if (!changed) return;
     kinematicBuilt_ = true;
     kinematicTime_ = t;
-    const std::size_t n = x_.size(), all = n + ghosts_.size();
+    // Called with the ghosts placed: the owned count is the set's, not the size of x.
+    const std::size_t n = particles_->ownedCount(), real = n + haloSize_, all = real + ghosts_.size();
     kinematic_.assign(all, 0);
-    bool any = false;
+    double any = 0;
     for (std::size_t k = 0; k < boundaries_.size(); ++k)
         if (boundaries_[k].active(t) && dynamic_cast<const Fixed<Dim>*>(&boundaries_[k]))
-            for (const std::size_t i : boundaries_[k].selection().indices()) kinematic_[i] = 1, any = true;
-    for (std::size_t g = 0; g < ghosts_.size(); ++g) kinematic_[n + g] = kinematic_[ghosts_.source[g]];
+            for (const std::size_t i : boundaries_[k].selection().indices()) kinematic_[i] = 1, any = 1;
+    if (decomposition_) decomposition_->refresh(kinematic_.data(), 1, n);
+    for (std::size_t g = 0; g < ghosts_.size(); ++g) kinematic_[real + g] = kinematic_[ghosts_.source[g]];
     freeOperators_.reset();
     free_.clear();
-    if (!any) {
+    if (globalSum(any) == 0) {  // on no rank: every rank alike
         kinematic_.clear();
         return;
     }
+    const std::vector<Vector<Dim>>& Xall = operators_->referencePositions();
     std::vector<Vector<Dim>> X;
     std::vector<double> V;
+    typename ReferenceOperators<Dim>::Options options;
+    options.laplacian = true;
     for (std::size_t i = 0; i < all; ++i)
         if (!kinematic_[i]) {
             free_.push_back(i);
-            X.push_back(i < n ? (*X_)[i] : ghosts_.position[i - n]);
+            X.push_back(Xall[i]);
             V.push_back(V_[i]);
+            if (!order_.empty()) options.order.push_back(order_[i]);
         }
-    typename ReferenceOperators<Dim>::Options options;
-    options.laplacian = true;
+    if (decomposition_)
+        options.interior = std::size_t(std::lower_bound(free_.begin(), free_.end(), n) - free_.begin());
+    std::string failure;
     try {
         freeOperators_ = std::make_unique<ReferenceOperators<Dim>>(X, V, h_, *kernel_, options);
     } catch (const Error& e) {
-        // A free particle with too few free neighbours: D(J) keeps the body's operators, the
-        // kinematic particles left out of its sums (not exact on linear J at the clamp's face).
-        Log::warning(std::string("D(J) on the operators of the whole body: those of the free particles "
-                                 "could not be built (") +
-                     e.what() + ")");
+        failure = e.what();
+    }
+    // A free particle with too few free neighbours: D(J) keeps the body's operators, the
+    // kinematic particles left out of its sums (not exact on linear J at the clamp's face). On
+    // every rank when on one.
+    if (globalSum(failure.empty() ? 0.0 : 1.0) > 0) {
+        Log::warning(
+            "D(J) on the operators of the whole body: those of the free particles could not be built (" +
+            GlobalReduce::firstMessage(failure.empty() ? noMessageKey : Communicator::rank(), failure) + ")");
         freeOperators_.reset();
     }
 }
@@ -858,12 +948,10 @@ void TlSphSolver<Dim>::freeJacobianLaplacians() {
     // images), written to lapJ_, lap2J_ of the real free particles (0 at the kinematic ones).
     const std::size_t n = x_.size(), m = free_.size();
     const auto& ops = *freeOperators_;
-    const std::vector<double>& J = *J_;
+    std::vector<double> J(*J_);  // owned, then the halo and the images
+    imagesOf(J, n, [&](std::size_t g, double a) { return ghosts_.reflectJacobian(g, a); });
     std::vector<double> Jfree(m);
-    parallelFor(m, [&](std::size_t s) {
-        const std::size_t i = free_[s];
-        Jfree[s] = i < n ? J[i] : ghosts_.reflectJacobian(i - n, J[ghosts_.source[i - n]]);
-    });
+    parallelFor(m, [&](std::size_t s) { Jfree[s] = J[free_[s]]; });
     const std::vector<double> L = ops.laplacianOf(Jfree);
     std::fill(lapJ_.begin(), lapJ_.begin() + n, 0.0);
     if (!lap2J_.empty()) std::fill(lap2J_.begin(), lap2J_.end(), 0.0);
@@ -1200,8 +1288,14 @@ std::vector<HealthIndicator> TlSphSolver<Dim>::healthIndicators() const {
     // the motion. Measured (tests/cases/health/tlSph.sh): the oscillating plate at 4 mm peaks at
     // 0.003; the spinning cube on its 6^3 lattice (stretched 23% by the spin) at 0.18 with JST
     // (0.11 on 11^3), and without JST, its hourglass modes free, at 0.27-0.43.
+    // x of the owned particles and the halo (the images' is not kept).
+    std::vector<Vector<Dim>> x(x_);
+    if (decomposition_) {
+        x.resize(n + haloSize_);
+        decomposition_->refresh(x.data(), sizeof(Vector<Dim>), n);
+    }
     parallelForWork(n, rows.offsets()[n], [&](std::size_t a) {
-        value[a] = hourglassIndicator<Dim>(a, rows, X.data(), x_.data(), (*F_)[a], n);
+        value[a] = hourglassIndicator<Dim>(a, rows, X.data(), x.data(), (*F_)[a], n + haloSize_);
     });
     indicators.push_back(indicator(
         "hourglass", value, true, 0.2,
@@ -1253,10 +1347,13 @@ template <int Dim>
 std::vector<std::string> TlSphSolver<Dim>::summary(double loopSeconds) const {
     std::vector<std::string> lines;
     char line[200];
-    std::snprintf(
-        line, sizeof line, "pair interactions/s  %.4g (%.1f neighbours per particle, 2 stages a step)",
-        loopSeconds > 0 ? pairInteractions_ / loopSeconds : 0.0,
-        x_.empty() ? 0.0 : double(operators_->neighbours().offsets()[x_.size()]) / double(x_.size()));
+    // Of the whole body (every rank's owned rows; rank 0 prints).
+    const double interactions = globalSum(pairInteractions_);
+    const double owned = globalSum(double(x_.size()));
+    const double pairs = globalSum(double(operators_->neighbours().offsets()[x_.size()]));
+    std::snprintf(line, sizeof line,
+                  "pair interactions/s  %.4g (%.1f neighbours per particle, 2 stages a step)",
+                  loopSeconds > 0 ? interactions / loopSeconds : 0.0, owned > 0 ? pairs / owned : 0.0);
     lines.push_back(line);
     std::snprintf(line, sizeof line, "pressure oscillation  %.6g (sum V |L[p]| h^2 / sum V |p|)",
                   pressureOscillation());
@@ -1265,6 +1362,29 @@ std::vector<std::string> TlSphSolver<Dim>::summary(double loopSeconds) const {
         std::snprintf(line, sizeof line,
                       "compatibility        %.3e (max |F - I - grad~(x - X)| / max(1, |F|))",
                       compatibilityError());
+        lines.push_back(line);
+    }
+    if (decomposition_) {
+        // The communication of a stage (bench/mpi's weak-scaling model): the halo is refreshed
+        // once per stage with haloFields_ (a message each, globalId first), plus L[p], L[J] where
+        // the dissipation reads them; the set-up's halo is counted in.
+        const double ranks = globalSum(1.0);
+        const double halo = globalSum(double(haloSize_));
+        const double bytes = globalSum(double(decomposition_->bytesSent()));
+        const double messages = globalSum(double(decomposition_->messagesSent()));
+        // Stages run: every stage adds the owned rows' pairs to pairInteractions_.
+        const double stages = pairs > 0 ? std::round(interactions / pairs) : 0.0;
+        std::snprintf(
+            line, sizeof line,
+            "decomposition        %.0f ranks (%s), cut once in X; halo %.0f particles (%.3g of the owned), "
+            "two supports deep",
+            ranks, decomposition_->partitioner().method().c_str(), halo, owned > 0 ? halo / owned : 0.0);
+        lines.push_back(line);
+        std::snprintf(
+            line, sizeof line,
+            "halo traffic         %.4g bytes per particle and %.3g messages per rank per stage (%.0f stages)",
+            owned > 0 && stages > 0 ? bytes / owned / stages : 0.0,
+            stages > 0 ? messages / ranks / stages : 0.0, stages);
         lines.push_back(line);
     }
     return lines;

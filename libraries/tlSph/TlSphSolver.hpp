@@ -52,10 +52,15 @@
 
 namespace mfdyn {
 
+class Decomposition;
+
 template <int Dim>
 class TlSphSolver final : public Solver {
 public:
     explicit TlSphSolver(SolverRun& run);
+    // Several ranks (issue 21): the body is cut once in the reference configuration and each rank
+    // holds a halo two supports deep, planned once (TlSphSolver.cpp, "Several ranks").
+    static constexpr bool runsOnSeveralRanks = true;
     // The keywords of constant/tlSphProperties (-describe, doc/models/solver/tlSph.md) and of its
     // `projection` sub-dictionary.
     static KeywordSchema keywords();
@@ -105,8 +110,9 @@ private:
     // The mirror ghosts on the particle set's ghost range, their fields mapped (GhostBlock.hpp);
     // computeRates clears them after its pair loop.
     void placeGhosts();
-    // Scratch `field` of the n owned particles extended by its images at the ghosts,
-    // field[n + g] = map(g, field[source of g]).
+    // Scratch `field` of the n owned particles extended by the halo (its owners' values, under
+    // MPI) and its images at the ghosts, field[n + halo + g] = map(g, field[source of g]).
+    // Collective under MPI.
     template <class T, class Map>
     void imagesOf(std::vector<T>& field, std::size_t n, Map&& map) const;
     void computeStress(bool updateState);
@@ -125,6 +131,13 @@ private:
 
     std::unique_ptr<ParticleSet<Dim>> owner_;
     ParticleSet<Dim>* particles_;
+    // Several ranks: SolverRun's decomposition (null on one process), the halo's size (0 on one
+    // process: every index below then reads as in a serial run), the fields each stage's halo
+    // carries, and the operators' order keys of [owned][halo][images] (ReferenceOperators::Options).
+    Decomposition* decomposition_ = nullptr;
+    std::size_t haloSize_ = 0;
+    std::vector<std::string> haloFields_;
+    std::vector<std::int64_t> order_;
     const Dictionary& properties_;
     const Dictionary& materialProperties_;
     const KeywordValues settings_;  // tlSphProperties read through keywords()
@@ -197,11 +210,13 @@ private:
 
     // Mirror ghosts of the symmetryPlane (parity +1) and skewSymmetricPlane (parity -1)
     // conditions, made once in the reference configuration (BoundaryConditionList::
-    // referenceImages): ghost g images real particle ghosts_.source[g] at ghosts_.position[g],
-    // placed on the particle set's ghost range for each stage's pair loop.
+    // referenceImages): ghost g images real particle ghosts_.source[g] (owned or halo) at
+    // ghosts_.position[g], placed on the particle set's ghost range, after the halo, for each
+    // stage's pair loop.
     GhostBlock<Dim> ghosts_;
 
-    // Scratch: volumes, the rates of a stage, Laplacians, the state at the start of a step.
+    // Scratch: volumes (of [owned][halo][images]), the rates of a stage, Laplacians, the state at
+    // the start of a step.
     std::vector<double> V_;
     std::vector<Vector<Dim>> acceleration_, lapP_, lap2P_, boundaryForce_;
     std::vector<Tensor<Dim>> dFdt_, dHdt_;

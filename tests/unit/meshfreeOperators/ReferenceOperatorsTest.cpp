@@ -365,6 +365,67 @@ TEST(ReferenceOperators, identicalForOneAndTwoThreads) {
     compareThreadCounts<3>(17);
 }
 
+// A rank's share of a body (issue 21, TlSphSolver): its owned points, in any order, then a halo of
+// the others within two supports, keyed by their serial indices (Options::order) and with only
+// the owned rows and their neighbours' computed (Options::interior). Every owned row must be the
+// serial row to the bit: the same neighbours in the same order, the same weights, the same
+// weights at the neighbour's row (gradientAtNeighbour, the Laplacian at mirror()). A far point
+// with no neighbour in the share is left alone (the whole set refuses it).
+template <int Dim>
+void compareShare(int n, GradientCorrection gradient) {
+    const auto kernel = makeKernel("wendlandC2");
+    const auto l = box<Dim>(n);
+    const double h = 1.3 * l.dx, reach = 2.0 * kernel->supportRadius(h);
+    typename ReferenceOperators<Dim>::Options options;
+    options.gradient = gradient;
+    options.correctedKernel = true;
+    const ReferenceOperators<Dim> serial(l.X, l.V, h, *kernel, options);
+    // Owned: x < 0.4, last index first; the halo: the rest within 2R of an owned point.
+    std::vector<std::size_t> local;
+    for (std::size_t a = l.X.size(); a-- > 0;)
+        if (l.X[a][0] < 0.4) local.push_back(a);
+    const std::size_t owned = local.size();
+    for (std::size_t b = 0; b < l.X.size(); ++b) {
+        if (l.X[b][0] < 0.4) continue;
+        for (std::size_t k = 0; k < owned; ++k)
+            if ((l.X[b] - l.X[local[k]]).norm() < reach) {
+                local.push_back(b);
+                break;
+            }
+    }
+    ASSERT_LT(local.size(), l.X.size());
+    std::vector<Vector<Dim>> X;
+    std::vector<double> V;
+    for (const std::size_t a : local) X.push_back(l.X[a]), V.push_back(l.V[a]);
+    options.order.assign(local.begin(), local.end());
+    options.interior = owned;
+    X.push_back(Vector<Dim>::Constant(5.0)), V.push_back(l.V[0]), options.order.push_back(1000000);
+    const ReferenceOperators<Dim> share(X, V, h, *kernel, options);
+    const auto& rows = share.neighbours();
+    const auto& serialRows = serial.neighbours();
+    for (std::size_t a = 0; a < owned; ++a) {
+        const std::size_t A = local[a];
+        ASSERT_EQ(rows.rowSize(a), serialRows.rowSize(A)) << Dim << "D, owned " << a;
+        for (std::size_t j = 0; j < rows.rowSize(a); ++j) {
+            const std::size_t k = rows.offsets()[a] + j, K = serialRows.offsets()[A] + j;
+            ASSERT_EQ(local[rows.indices()[k]], serialRows.indices()[K]) << Dim << "D, owned " << a;
+            EXPECT_TRUE(share.gradient()[k] == serial.gradient()[K]);
+            EXPECT_TRUE(share.gradientAtNeighbour()[k] == serial.gradientAtNeighbour()[K]);
+            EXPECT_EQ(share.laplacian()[k], serial.laplacian()[K]);
+            EXPECT_EQ(share.laplacian()[share.mirror()[k]], serial.laplacian()[serial.mirror()[K]]);
+            EXPECT_EQ(share.correctedKernel()[k], serial.correctedKernel()[K]);
+        }
+    }
+    options.interior = std::size_t(-1);
+    EXPECT_THROW(ReferenceOperators<Dim>(X, V, h, *kernel, options), Error);
+}
+
+TEST(ReferenceOperators, aSharesOwnedRowsAreTheSerialRowsToTheBit) {
+    compareShare<2>(20, GradientCorrection::corrected);
+    compareShare<3>(17, GradientCorrection::corrected);
+    compareShare<3>(17, GradientCorrection::correctedKernel);
+}
+
 TEST(ReferenceOperators, isolatedParticleIsAClearError) {
     const auto kernel = makeKernel("cubicSpline");
     auto l = box<2>(10);
