@@ -174,6 +174,9 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
         haloFields_ = {"position", "velocity", "mass", "density", "smoothingLength", "material", "region"};
         if (e_) haloFields_.push_back("specificInternalEnergy");
         if (tau_) haloFields_.push_back("deviatoricStress");
+        // Planned now, so that what runs before the first step (the function objects at the
+        // start time, the health indicators) sees each rank's neighbours across its cuts.
+        updateDecomposition();
     }
 }
 
