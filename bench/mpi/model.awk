@@ -1,7 +1,8 @@
-# Weak-scaling model of distributed impactSph from the measured halo traffic (bench/mpi/run.sh).
-# Inputs (-v): loop1 (loop seconds of the serial run, one thread), steps, particles (its count);
+# Weak-scaling model of a distributed run from its measured halo traffic (bench/mpi/run.sh).
+# Inputs (-v): name (the case), loop1 (loop seconds of the serial run, one thread), steps, particles (its count);
 # from the 2-rank run: halo (halo particles over owned), bytes (halo bytes per particle per rate
-# evaluation) and messages (per rank per evaluation). At 2 ranks each rank has one cut face and
+# evaluation: a rate evaluation of impactSph, a stage of tlSph) and messages (per rank per
+# evaluation). At 2 ranks each rank has one cut face and
 # one neighbour rank.
 #
 # Weak scaling keeps n = particles/2 per rank and the rank's block the shape it has at 2 ranks;
@@ -16,7 +17,7 @@ BEGIN {
     alpha = 1.5e-6; beta = 5e9; reductions = 12
     n = particles / 2
     tcomp = loop1 / steps * n / particles
-    printf "\nWeak-scaling model (n = %d particles per rank, t_comp %.3g s per evaluation; alpha %.1g s, beta %.1g B/s, %d reductions per evaluation; measured at 2 ranks: halo %.3g of the owned, %.4g B per particle, %.3g messages per rank per evaluation)\n\n", n, tcomp, alpha, beta, reductions, halo, bytes, messages
+    printf "\nWeak-scaling model of %s (n = %d particles per rank, t_comp %.3g s per evaluation; alpha %.2g s, beta %.2g B/s, %d reductions per evaluation; measured at 2 ranks: halo %.3g of the owned, %.4g B per particle, %.3g messages per rank per evaluation)\n\n", name, n, tcomp, alpha, beta, reductions, halo, bytes, messages
     print "| ranks | faces per rank | neighbour ranks | halo / owned | bytes per rank per evaluation | t_comm / t_comp | predicted efficiency |"
     print "|---:|---:|---:|---:|---:|---:|---:|"
     for (k = 1; k <= 6; ++k) {
