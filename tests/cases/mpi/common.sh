@@ -70,3 +70,14 @@ latest() {
     [ -n "$t" ] || fail "no time directory in $1"
     echo "$1/$t"
 }
+
+# inBackground <case> <n>: impactSph on n ranks in the background (log in <case>/log), its exit
+# status written to <case>/status when it ends. (set -e holds in the subshell too: the status is
+# caught, or the subshell would end at the failure without writing it.)
+inBackground() {
+    (
+        code=0
+        RANKS_TIMEOUT=120 onRanks "$2" impactSph -case "$1" > "$1/log" 2>&1 || code=$?
+        echo $code > "$1/status"
+    ) &
+}

@@ -48,12 +48,7 @@ grep -q "Wrote the failing state to" "$c/log" || fail "NaN on one rank: the fail
 
 # A rank killed: the job ends within seconds (mpirun ends the others), status not 0.
 c=$(hviCase killed 200e-6)
-# (set -e holds in the subshell too: the status is caught, or the subshell would end at the failure.)
-(
-    code=0
-    RANKS_TIMEOUT=120 onRanks 2 impactSph -case "$c" > "$c/log" 2>&1 || code=$?
-    echo $code > "$c/status"
-) &
+inBackground "$c" 2
 for _ in $(seq 1 100); do grep -q "^Step " "$c/log" 2>/dev/null && break; sleep 0.1; done
 victim=$(pgrep -f "^impactSph -case $c" | tail -n 1)  # a rank, not mpirun or timeout
 [ -n "$victim" ] || fail "killed rank: no rank running"

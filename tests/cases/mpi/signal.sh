@@ -2,11 +2,7 @@
 # pieces all of the same time, every particle once), and the run restarts from it.
 . "$(dirname "$0")/common.sh"
 c=$(hviCase signal 200e-6)
-(
-    code=0
-    RANKS_TIMEOUT=120 onRanks 2 impactSph -case "$c" > "$c/log" 2>&1 || code=$?
-    echo $code > "$c/status"
-) &
+inBackground "$c" 2
 # Once the loop runs (the first progress or the decomposition's line), signal mpirun (the launcher).
 for _ in $(seq 1 200); do grep -q "^Starting time loop" "$c/log" 2>/dev/null && break; sleep 0.1; done
 sleep 2
