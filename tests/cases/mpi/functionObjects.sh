@@ -1,10 +1,10 @@
 # Function objects on several ranks (issue 21): Sod's tube to t = 0.05 (sod/system/controlDict, the
 # particles and materials of tests/cases/impactSph/sodShockTube) run on one process and under
 # mpiexec on 2 and 3 ranks. Every function object's CSV and the log's error lines must be the
-# serial run's, to 1e-12 of each column's scale (compareRuns.py): the solver's own results may
-# differ from the serial ones in the last bits (the neighbour sums meet their terms in another
-# order where a particle's neighbours live on two ranks), and a function object that saw one
-# rank's share (riemannError's shock at x = 0.06 instead of 0.59) misses by far more.
+# serial run's, to 1e-12 of each column's scale (compareRuns.py): impactSph's state is the serial
+# one to the bit, but global sums (energies, norms) add the ranks' partials in another order, and a
+# function object that saw one rank's share (riemannError's shock at x = 0.06 instead of 0.59)
+# misses by far more.
 # $1 = build directory, $2 = this source directory, $3 = mpiexec.
 set -euo pipefail
 BUILD="$1"
