@@ -22,20 +22,84 @@ void ExactSum::normalise() {
     }
     limb_[limbs - 1] += carry;
     count_ = 1;
+    high_ = limbs - 1;
+}
+
+// Four doubles side by side (GCC's vector extension): SSE2 pairs on any x86-64, one AVX2 register
+// in the avx2 clone of ExactSum::add.
+typedef double ExactSumLanes __attribute__((vector_size(32)));
+
+__attribute__((target_clones("avx2", "default"))) void ExactSum::add(double* x, std::size_t len) {
+    using Lanes = ExactSumLanes;
+    Lanes largest{}, special{};
+    for (std::size_t i = 0; i < len; i += 4) {
+        Lanes v;
+        std::memcpy(&v, x + i, sizeof v);
+        const Lanes magnitude = v < 0 ? -v : v;
+        largest = magnitude > largest ? magnitude : largest;
+        special += v * 0.0;  // NaN if any term is infinite or NaN
+    }
+    const double big = std::max(std::max(largest[0], largest[1]), std::max(largest[2], largest[3]));
+    const double nonFinite = (special[0] + special[1]) + (special[2] + special[3]);
+    if (big == 0 && nonFinite == 0) return;
+    if (nonFinite != 0 || !(big < 0x1p900) || big < 0x1p-900) {
+        for (std::size_t i = 0; i < len; ++i) *this += x[i];
+        return;
+    }
+    // |x| < 2^e; bin k1 = e + 8: its unit 2^(k1-52), |x| <= 2^(k1-8), and 256 parts sum within
+    // 2^(k1+1) (exactly: multiples of the unit below 2^53 units). The remainder after a bin is
+    // at most half its unit, 2^(k-53): the next bin is k - 45, and after three the remainders
+    // are zero for every term above 2^(e-82).
+    // (Bit arithmetic rather than frexp and ldexp, library calls that cost more than a short sum.)
+    const int e = int(std::bit_cast<std::uint64_t>(big) >> 52) - 1022;  // big normal, below 2^e
+    auto bin = [](int k) {
+        return std::bit_cast<double>(std::uint64_t(k + 1023) << 52 | std::uint64_t(1) << 51);
+    };
+    const double m1 = bin(e + 8), m2 = bin(e + 8 - 45), m3 = bin(e + 8 - 90);  // 1.5 x 2^k
+    Lanes s1{}, s2{}, s3{}, rest{};
+    for (std::size_t i = 0; i < len; i += 4) {
+        Lanes v;
+        std::memcpy(&v, x + i, sizeof v);
+        const Lanes q1 = (m1 + v) - m1, r1 = v - q1;
+        const Lanes q2 = (m2 + r1) - m2, r2 = r1 - q2;
+        const Lanes q3 = (m3 + r2) - m3, r3 = r2 - q3;
+        s1 += q1, s2 += q2, s3 += q3;
+        const Lanes left = r3 < 0 ? -r3 : r3;
+        rest = left > rest ? left : rest;
+        std::memcpy(x + i, &r3, sizeof r3);
+    }
+    // The lanes of a bin add exactly too (multiples of its unit, within the same bound).
+    for (const Lanes& bin : {s1, s2, s3}) *this += (bin[0] + bin[1]) + (bin[2] + bin[3]);
+    if (std::max(std::max(rest[0], rest[1]), std::max(rest[2], rest[3])) > 0)
+        for (std::size_t i = 0; i < len; ++i)
+            if (x[i] != 0) *this += x[i];
 }
 
 double ExactSum::value() const {
+    if (high_ < low_) return special_;
+    // The carries over the limbs touched only, into the one above (signed: it may hold more than
+    // 32 bits; the bits are read as a sum of the limbs, which is what they are).
     ExactSum a = *this;
-    a.normalise();
-    const bool negative = a.limb_[limbs - 1] < 0;
+    const int low = low_, last = std::min(high_ + 1, limbs - 1);
+    auto carryUp = [&] {
+        std::int64_t carry = 0;
+        for (int k = low; k < last; ++k) {
+            const std::int64_t v = a.limb_[k] + carry;
+            a.limb_[k] = v & 0xffffffff;
+            carry = v >> 32;  // arithmetic: floor(v / 2^32)
+        }
+        a.limb_[last] += carry;
+    };
+    carryUp();
+    const bool negative = a.limb_[last] < 0;
     if (negative) {  // the magnitude: negate every limb and carry again
-        for (auto& l : a.limb_) l = -l;
-        a.normalise();
+        for (int k = low; k <= last; ++k) a.limb_[k] = -a.limb_[k];
+        carryUp();
     }
-    int top = limbs - 1;
-    while (top >= 0 && a.limb_[top] == 0) --top;
+    int top = last;
+    while (top >= low && a.limb_[top] == 0) --top;
     double magnitude = 0;
-    if (top >= 0) {
+    if (top >= low) {
         // The highest bit set, `high`, above 2^-1074; the last bit kept, `ulp`: 53 bits from
         // `high` down, none below 2^-1074 (subnormals keep fewer).
         const int high = 32 * top + 63 - std::countl_zero(std::uint64_t(a.limb_[top]));

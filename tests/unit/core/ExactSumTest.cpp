@@ -167,8 +167,45 @@ TEST(ExactSum, WideRandomSumsAreCorrectlyRoundedWhateverTheOrderAndTheBlocks) {
             ExactSum merged;
             for (auto b = blocks.rbegin(); b != blocks.rend(); ++b) merged += *b;
             ASSERT_EQ(merged.value(), reference);
+            // The same through the chunked path (ExactSum::add, padded with zeros) and LocalReduce.
+            ExactSum chunked;
+            for (std::size_t i = 0; i < v.size(); i += ExactSum::chunk) {
+                std::vector<double> c(v.begin() + long(i),
+                                      v.begin() + long(std::min(v.size(), i + ExactSum::chunk)));
+                c.resize((c.size() + 3) / 4 * 4, 0.0);
+                chunked.add(c.data(), c.size());
+            }
+            ASSERT_EQ(chunked.value(), reference);
+            ASSERT_EQ(LocalReduce::exactSum<double>(v.size(), [&](std::size_t i) { return v[i]; }),
+                      reference);
         }
     }
+}
+
+TEST(ExactSum, TheBinnedPathKeepsWhatLiesFarBelowTheLargestTerm) {
+    // ExactSum::add splits each term over three bins below the largest of its chunk; terms more
+    // than 2^82 below it keep a remainder, added term by term; all of it exactly.
+    const double tiny = std::ldexp(1.0, -1074);
+    auto chunked = [](std::vector<double> v) {
+        v.resize((v.size() + 3) / 4 * 4, 0.0);
+        ExactSum s;
+        s.add(v.data(), v.size());
+        return s.value();
+    };
+    EXPECT_EQ(chunked({1e16, 1.0, -1e16}), 1.0);
+    EXPECT_EQ(chunked({1.0, std::ldexp(1.0, -53), std::ldexp(1.0, -100)}), 1.0 + std::ldexp(1.0, -52));
+    EXPECT_EQ(chunked({1.0, std::ldexp(1.0, -53), -std::ldexp(1.0, -200)}), 1.0);
+    EXPECT_EQ(chunked({std::ldexp(1.0, 899), 1.0, -std::ldexp(1.0, 899)}), 1.0);
+    EXPECT_EQ(chunked({1e300, 1e300, -1e300, -1e300, tiny}), tiny);  // beyond 2^900: term by term
+    EXPECT_EQ(chunked({tiny, tiny, -tiny, 3 * tiny}), 4 * tiny);     // below 2^-900 too
+    EXPECT_EQ(chunked({1.0, std::numeric_limits<double>::infinity()}),
+              std::numeric_limits<double>::infinity());
+    EXPECT_EQ(chunked({0.0, -0.0}), 0.0);
+    std::vector<double> v;
+    std::mt19937_64 random(3);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    for (int i = 0; i < 256; ++i) v.push_back(std::ldexp(unit(random), i % 3 == 0 ? -120 : 0));
+    EXPECT_EQ(chunked(v), fsum(v));
 }
 
 TEST(ExactSum, CarriesAreTakenBeforeALimbOverflows) {
