@@ -13,7 +13,7 @@ void MomentumProjection<Dim>::momentum(std::vector<Vector<Dim>>& f, const std::v
                                        const std::vector<Vector<Dim>>& xTilde, bool angular) {
     const std::size_t n = f.size();
     // Pass 1: sum V, sum V x~, sum V f.
-    const auto first = GlobalReduce::sum<SumArray<1 + 2 * Dim>>(n, [&](std::size_t i) {
+    const auto first = GlobalReduce::exactSum<SumArray<1 + 2 * Dim>>(n, [&](std::size_t i) {
         SumArray<1 + 2 * Dim> s;
         s.s[0] = volume[i];
         for (int d = 0; d < Dim; ++d)
@@ -32,7 +32,7 @@ void MomentumProjection<Dim>::momentum(std::vector<Vector<Dim>>& f, const std::v
     }
     if constexpr (Dim == 2) {
         // sum V |x'|^2 and sum V (x' x f)_z.
-        const auto second = GlobalReduce::sum<SumArray<2>>(n, [&](std::size_t i) {
+        const auto second = GlobalReduce::exactSum<SumArray<2>>(n, [&](std::size_t i) {
             const Vector<2> r = xTilde[i] - centroid;
             SumArray<2> s;
             s.s[0] = volume[i] * r.squaredNorm();
@@ -46,7 +46,7 @@ void MomentumProjection<Dim>::momentum(std::vector<Vector<Dim>>& f, const std::v
         });
     } else if constexpr (Dim == 3) {
         // M = sum V (|x'|^2 I - x' x'^T) (symmetric: 6 entries) and b = sum V x' x f.
-        const auto second = GlobalReduce::sum<SumArray<9>>(n, [&](std::size_t i) {
+        const auto second = GlobalReduce::exactSum<SumArray<9>>(n, [&](std::size_t i) {
             const Vector<3> r = xTilde[i] - centroid;
             const Vector<3> m = r.cross(f[i]);
             const double v = volume[i], r2 = r.squaredNorm();
@@ -79,7 +79,7 @@ void MomentumProjection<Dim>::momentum(std::vector<Vector<Dim>>& f, const std::v
 template <int Dim>
 void MomentumProjection<Dim>::mean(std::vector<double>& g, const std::vector<double>& volume) {
     const std::size_t n = g.size();
-    const auto s = GlobalReduce::sum<SumArray<2>>(n, [&](std::size_t i) {
+    const auto s = GlobalReduce::exactSum<SumArray<2>>(n, [&](std::size_t i) {
         SumArray<2> t;
         t.s = {volume[i], volume[i] * g[i]};
         return t;
@@ -94,7 +94,7 @@ void MomentumProjection<Dim>::mean(std::vector<double>& g, const std::vector<dou
                                    const std::vector<char>& skip) {
     if (skip.empty()) return mean(g, volume);
     const std::size_t n = g.size();
-    const auto s = GlobalReduce::sum<SumArray<2>>(n, [&](std::size_t i) {
+    const auto s = GlobalReduce::exactSum<SumArray<2>>(n, [&](std::size_t i) {
         SumArray<2> t;
         if (!skip[i]) t.s = {volume[i], volume[i] * g[i]};
         return t;
