@@ -29,7 +29,13 @@ void ExactSum::normalise() {
 // in the avx2 clone of ExactSum::add.
 typedef double ExactSumLanes __attribute__((vector_size(32)));
 
-__attribute__((target_clones("avx2", "default"))) void ExactSum::add(double* x, std::size_t len) {
+// The avx2 clone where the target has one (x86-64 only: elsewhere the plain build).
+#if defined(__x86_64__) && defined(__GNUC__)
+#define MFDYN_EXACT_SUM_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define MFDYN_EXACT_SUM_CLONES
+#endif
+MFDYN_EXACT_SUM_CLONES void ExactSum::add(double* x, std::size_t len) {
     using Lanes = ExactSumLanes;
     Lanes largest{}, special{};
     for (std::size_t i = 0; i < len; i += 4) {

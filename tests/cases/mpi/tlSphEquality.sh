@@ -3,7 +3,7 @@
 # skew-symmetric planes, {p,F}), a coarse Taylor bar quarter (0.8 mm, three symmetry planes,
 # {p,F,J} with J2 plasticity and the D(J) mean projection) and the coarse oscillating plate (4 mm,
 # 384 particles in 2D, {p,F,J} with jacobian (0 0.125): the momentum and D(J) projections every
-# stage, 1090 steps). The body is cut once in X and its halo is two supports deep, with the rows of
+# stage, 1134 steps). The body is cut once in X and its halo is two supports deep, with the rows of
 # every sum in the serial order (TlSphSolver.cpp, "Several ranks"): the pair sums have the serial
 # bits, and the projections' global sums are exact (GlobalReduce::exactSum, rounded once), so
 # they have the serial bits too. Measured: all three to the bit on 2 and 3 ranks. Before the exact
