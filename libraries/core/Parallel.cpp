@@ -141,37 +141,48 @@ double ExactSum::value() const {
 
 namespace mfdyn {
 
+namespace {
+
+// Every rank's value, in rank order (one allGather).
+std::vector<double> gatherOne(double local) {
+    std::vector<double> all(std::size_t(Communicator::size()));
+    Communicator::allGather(&local, sizeof local, all.data());
+    return all;
+}
+
+// Every rank's values of a trivially copyable T, concatenated in rank order (allGatherVariable).
+template <class T>
+std::vector<T> gatherAll(const std::vector<T>& local) {
+    std::vector<T> all;
+    const char* bytes = reinterpret_cast<const char*>(local.data());
+    for (const auto& part :
+         Communicator::allGatherVariable(std::vector<char>(bytes, bytes + local.size() * sizeof(T)))) {
+        const std::size_t k = part.size() / sizeof(T), at = all.size();
+        all.resize(at + k);
+        if (k) std::memcpy(all.data() + at, part.data(), part.size());
+    }
+    return all;
+}
+
+}  // namespace
+
 double globalMax(double local) {
     globalReductionCount.fetch_add(1, std::memory_order_relaxed);
     if (!Communicator::distributed()) return local;
-    std::vector<double> all(std::size_t(Communicator::size()));
-    Communicator::allGather(&local, sizeof local, all.data());
+    const std::vector<double> all = gatherOne(local);
     return *std::max_element(all.begin(), all.end());
 }
 
 double globalMin(double local) {
     globalReductionCount.fetch_add(1, std::memory_order_relaxed);
     if (!Communicator::distributed()) return local;
-    std::vector<double> all(std::size_t(Communicator::size()));
-    Communicator::allGather(&local, sizeof local, all.data());
+    const std::vector<double> all = gatherOne(local);
     return *std::min_element(all.begin(), all.end());
 }
 
 double globalMedian(const std::vector<double>& local) {
     globalReductionCount.fetch_add(1, std::memory_order_relaxed);
-    std::vector<double> all;
-    if (!Communicator::distributed()) {
-        all = local;
-    } else {
-        const char* bytes = reinterpret_cast<const char*>(local.data());
-        for (const auto& part : Communicator::allGatherVariable(
-                 std::vector<char>(bytes, bytes + local.size() * sizeof(double)))) {
-            const std::size_t k = part.size() / sizeof(double);
-            const std::size_t at = all.size();
-            all.resize(at + k);
-            if (k) std::memcpy(all.data() + at, part.data(), part.size());
-        }
-    }
+    std::vector<double> all = Communicator::distributed() ? gatherAll(local) : local;
     if (all.empty()) return 0;
     std::nth_element(all.begin(), all.begin() + long(all.size() / 2), all.end());
     return all[all.size() / 2];
@@ -179,16 +190,7 @@ double globalMedian(const std::vector<double>& local) {
 
 std::vector<std::int64_t> globalConcatenation(const std::vector<std::int64_t>& local) {
     globalReductionCount.fetch_add(1, std::memory_order_relaxed);
-    if (!Communicator::distributed()) return local;
-    std::vector<std::int64_t> all;
-    const char* bytes = reinterpret_cast<const char*>(local.data());
-    for (const auto& part : Communicator::allGatherVariable(
-             std::vector<char>(bytes, bytes + local.size() * sizeof(std::int64_t)))) {
-        const std::size_t k = part.size() / sizeof(std::int64_t), at = all.size();
-        all.resize(at + k);
-        if (k) std::memcpy(all.data() + at, part.data(), part.size());
-    }
-    return all;
+    return Communicator::distributed() ? gatherAll(local) : local;
 }
 
 std::string globalFirstMessage(std::int64_t key, std::string text) {
