@@ -60,6 +60,30 @@
 // highest, 2 c_p / dx per axis (at most 2 sqrt(d) c_p / dx). Bounded and oscillating, no drift;
 // the nonlinear law and the cell crossings (the stiffness changes as particles move) lie outside
 // the argument (tests/cases/health/mpmFsi.sh: twoDisks, 0.36% of K + U against 6.6e-3).
+//
+// Several ranks (issue 21). The particles are cut by position (particles/Decomposition, Zoltan)
+// and each rank solves the grid where its particles are, redundantly near the cuts: a node's sums
+// are complete on a rank that holds every particle reaching it. A particle reaches the nodes
+// within R = supportHalfWidth x the largest cell size of it (per axis), and a node reached by an
+// owned particle is reached only by particles within 2R of that particle, so the halo is the other
+// ranks' particles within w = 2R + skin (one cell) of the rank's part, appended at each step's
+// start with the fields the particle-to-grid sums read (x, v, m, rho0, J, sigma, material, region,
+// C under APIC), and the particles migrate (and the halo is planned again) when 2 max |x - x_m| +
+// 2R > w, x_m the positions at the last migration: at most every half cell of motion. Within a
+// node the terms come colour by colour, tile by tile, and within a tile in global-id order
+// (ParticleColouring), which does not depend on the numbering of a rank's particles: every node
+// an owned particle reads has the serial run's bits, and so do G2P and the stress of the owned
+// particles. No grid sum is reduced across ranks: the halo of particles (2R + skin wide) replaces
+// the one-cell node halo whose partial sums, added across ranks, could not keep the serial order
+// (exact sums of five node fields per node would cost more than the redundant scatter). Where
+// the halo's state changes within a step its owners refresh it: J and sigma after USF's stress,
+// x, v (and C) before MUSL's second map. The sums over nodes (the energy budget's K^n, K*, K+, W,
+// the contact pair forces, the small-mass indicator, writeGrid's image) count each node once, on
+// the rank that owns the lowest-id particle reaching it (ownedNode_); they agree with the serial
+// run to round-off (rank-order sums of per-rank partials), the particle state to the bit. The
+// torn-body check joins each rank's pieces through the halo particles' labels from their owners
+// (checkTorn). pressureSmoothing (cell averages over a bucket in index order) is refused on
+// several ranks.
 #include "mpm/MpmSolver.hpp"
 
 #include "core/KeywordSchema.hpp"
@@ -67,15 +91,18 @@
 #include "core/Parallel.hpp"
 #include "grid/VtiWriter.hpp"
 #include "materials/Embedding.hpp"
+#include "particles/Decomposition.hpp"
 #include "solver/MaterialAssignment.hpp"
 #include "solver/SolverRegistry.hpp"
 #include "solver/SolverRun.hpp"
 
 #include <Eigen/Dense>
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
 #include <sstream>
 #include <utility>
 
@@ -165,6 +192,18 @@ MpmSolver<Dim>::MpmSolver(SolverRun& run)
     }
     readMaterials();
     initialiseFields();
+    decomposition_ = run.decomposition();
+    if (decomposition_) {
+        if (smoothing_->active())
+            throw properties_.error("pressureSmoothing",
+                                    "pressureSmoothing " + smoothing_->describe() +
+                                        " does not run on several ranks yet (its cell averages are not "
+                                        "exchanged): run serially, or choose pressureSmoothing none");
+        haloFields_ = {"position", "velocity", "mass", "density", "jacobian", "cauchyStress", "material", "region"};
+        if (C_) haloFields_.push_back("affineVelocity");
+        // Planned now: the decomposition's report in the log before the first step.
+        updateDecomposition();
+    }
 }
 
 template <int Dim>
@@ -279,7 +318,7 @@ void MpmSolver<Dim>::initialiseFields() {
       << scheme_->type() << ", velocityUpdate " << velocityUpdate_->describe() << ", gridDamping "
       << damping_->describe() << ", pressureSmoothing " << smoothing_->describe() << ", contact "
       << contact_->describe() << (multi_ ? " over " + std::to_string(bodyNames_.size()) + " bodies" : "")
-      << ", massCutoff " << massCutoff_ << " kg, " << n << " particles";
+      << ", massCutoff " << massCutoff_ << " kg, " << std::size_t(globalSum(double(n))) << " particles";
     Log::info(s.str());
 }
 
@@ -327,6 +366,7 @@ void MpmSolver<Dim>::checkInsideGrid() {
             bodies += (bodies.empty() ? "" : ", ") + bodyName(i);
     }
     particles_->keep(keep);
+    replan_ = true;  // the halo plan indexes the owned particles (a global decision: count is global)
     removedMass_ += mass;
     removedParticles_ += std::size_t(count);
     std::ostringstream s;
@@ -335,6 +375,57 @@ void MpmSolver<Dim>::checkInsideGrid() {
       << " left the grid at t = " << time().value() << ", mass " << mass << " kg removed (" << removedMass_
       << " kg in all, " << 100.0 * removedMass_ / initialMass_ << "% of the initial mass)";
     Log::info(s.str());
+}
+
+template <int Dim>
+void MpmSolver<Dim>::updateDecomposition() {
+    // A global test, one reduction a step (the header's "Several ranks"): every rank decides alike.
+    const std::size_t n = ownedCount();
+    const double cell = grid_.cellSize().maxCoeff();
+    const double reach = shape_->supportHalfWidth() * cell;
+    bool due = haloWidth_ == 0 || replan_;
+    if (!due) {
+        const double dMax =
+            GlobalReduce::max(n, [&](std::size_t i) { return (x_[i] - xAtMigration_[i]).norm(); });
+        due = 2 * dMax + 2 * reach > haloWidth_;
+    }
+    if (!due) return;
+    auto timed = phase("shapeFunctions");
+    const bool first = haloWidth_ == 0;
+    const int rebalancesBefore = decomposition_->rebalances();
+    // Every particle costs the same (its support's nodes): weight 1 each.
+    decomposition_->migrate(*particles_, {});
+    skin_ = cell;
+    haloWidth_ = 2 * reach + skin_;
+    decomposition_->planHalo(*particles_, haloWidth_);
+    replan_ = false;
+    xAtMigration_.assign(x_.begin(), x_.begin() + std::ptrdiff_t(ownedCount()));
+    if (first || decomposition_->rebalances() != rebalancesBefore)
+        Log::info(decomposition_->report(*particles_, {}));
+}
+
+template <int Dim>
+void MpmSolver<Dim>::markOwnedNodes() {
+    // A node is counted by the rank owning the lowest-id particle that reaches it: that rank holds
+    // every particle reaching the node (the halo covers two supports), so its sums are complete,
+    // and every rank that holds the node whole sees the same lowest id. Nodes reached only by halo
+    // particles (incomplete here) are never this rank's.
+    const std::size_t owned = ownedCount(), stride = list_.stride;
+    const auto& id = particles_->globalId();
+    nodeFirstId_.assign(grid_.nodeCount(), std::numeric_limits<std::int64_t>::max());
+    colouring_.forEachParticle([&](std::size_t p) {
+        const std::size_t base = p * stride;
+        for (std::size_t k = 0; k < list_.count[p]; ++k) {
+            auto& first = nodeFirstId_[list_.node[base + k]];
+            first = std::min(first, id[p]);
+        }
+    });
+    ownedNode_.assign(grid_.nodeCount(), 0);
+    parallelFor(owned, [&](std::size_t p) {
+        const std::size_t base = p * stride;
+        for (std::size_t k = 0; k < list_.count[p]; ++k)
+            if (nodeFirstId_[list_.node[base + k]] == id[p]) ownedNode_[list_.node[base + k]] = 1;
+    });
 }
 
 template <int Dim>
@@ -409,7 +500,9 @@ void MpmSolver<Dim>::evaluateShapeFunctions() {
         });
     }
     shape_->evaluate(grid_, std::span<const Vector<Dim>>(x_), std::span<const Vector<Dim>>(halfSize_), list_);
-    colouring_.build(grid_, std::span<const Vector<Dim>>(x_), list_);
+    colouring_.build(grid_, std::span<const Vector<Dim>>(x_), list_,
+                     std::span<const std::int64_t>(particles_->globalId()));
+    if (decomposition_) markOwnedNodes();
 }
 
 template <int Dim>
@@ -541,8 +634,10 @@ void MpmSolver<Dim>::solveGrid(double dt, double t) {
                 const Vector<Dim> v0 = mv[I] / m[I];
                 aI[I] = (f[I] - alpha * mv[I]) / m[I];
                 vI[I] = v0 + dt * aI[I];
-                e.s[0] = 0.5 * m[I] * v0.squaredNorm();
-                e.s[1] = 0.5 * m[I] * vI[I].squaredNorm();
+                if (countsNode(I)) {
+                    e.s[0] = 0.5 * m[I] * v0.squaredNorm();
+                    e.s[1] = 0.5 * m[I] * vI[I].squaredNorm();
+                }
             } else {
                 aI[I] = Vector<Dim>::Zero();
                 vI[I] = Vector<Dim>::Zero();
@@ -560,7 +655,7 @@ void MpmSolver<Dim>::solveGrid(double dt, double t) {
                        const std::vector<Vector<Dim>>& contacted, const std::vector<Vector<Dim>>& vI) {
         return GlobalReduce::sum<SumArray<2>>(vI.size(), [&](std::size_t I) {
             SumArray<2> e;
-            if (!(m[I] >= massCutoff_)) return e;
+            if (!(m[I] >= massCutoff_) || !countsNode(I)) return e;
             const Vector<Dim> v0 = mv[I] / m[I];
             e.s[0] = 0.5 * m[I] * vI[I].squaredNorm();
             for (int c = 0; c < Dim; ++c) {
@@ -630,7 +725,7 @@ void MpmSolver<Dim>::gridToParticles(double dt) {
     auto timed = phase("gridToParticle");
     const double r = velocityUpdate_->flipFraction();
     const std::size_t stride = list_.stride;
-    parallelFor(x_.size(), [&](std::size_t p) {
+    parallelFor(ownedCount(), [&](std::size_t p) {
         // The particle's own body's field under multiField, the shared one else.
         const Vector<Dim>* vI = velocityOf(p);
         const Vector<Dim>* aI =
@@ -667,11 +762,12 @@ void MpmSolver<Dim>::gridToParticles(double dt) {
 
 template <int Dim>
 void MpmSolver<Dim>::updateStress(double dt, bool advanceState) {
-    if (advanceState && plastic_) plasticLoss_.assign(x_.size(), 0.0);
+    const std::size_t n = ownedCount();
+    if (advanceState && plastic_) plasticLoss_.assign(n, 0.0);
     auto timed = phase("stress");
     const std::size_t stride = list_.stride;
     const bool move = dt != 0.0;
-    parallelFor(x_.size(), [&](std::size_t p) {
+    parallelFor(n, [&](std::size_t p) {
         Tensor<Dim> L = Tensor<Dim>::Zero();
         if (move) {
             const Vector<Dim>* vI = velocityOf(p);
@@ -735,7 +831,7 @@ void MpmSolver<Dim>::updateStress(double dt, bool advanceState) {
     });
     // The plastic flow's dissipation (the budget's D; the law's |s| dgamma per reference volume).
     if (advanceState && plastic_)
-        dissipated_ += GlobalReduce::sum<double>(x_.size(), [&](std::size_t p) { return m_[p] / rho0_[p] * plasticLoss_[p]; });
+        dissipated_ += GlobalReduce::sum<double>(n, [&](std::size_t p) { return m_[p] / rho0_[p] * plasticLoss_[p]; });
 }
 
 template <int Dim>
@@ -776,7 +872,7 @@ void MpmSolver<Dim>::checkIsolated() {
         }
         return true;
     };
-    Solver::checkState("particleToGrid", x_.size(), isolated, [&](std::size_t p, double count) {
+    Solver::checkState("particleToGrid", ownedCount(), isolated, [&](std::size_t p, double count) {
         std::ostringstream s;
         s << "particle " << particles_->globalId()[p] << " (body " << bodyName(p) << ") at "
           << vectorText<Dim>(x_[p]) << " shares no grid node with any other particle: it has separated from "
@@ -797,8 +893,8 @@ void MpmSolver<Dim>::checkTorn() {
     // has torn apart by more than the support. A detached row falls as a piece while every one
     // of its particles still shares nodes with its neighbours in the row, so checkIsolated (a
     // piece of one) misses it and the run went on until the row left the grid. Union-find over
-    // the nodes, serial, O(particles x support) per step; the pieces are this rank's (an MPI
-    // build would join them across ranks at the halo nodes).
+    // the nodes, serial, O(particles x support) per step, over the rank's owned and halo
+    // particles; on several ranks the pieces are joined through the halo (below).
     if (!stopIsolated_) return;
     const std::size_t n = x_.size();
     const std::size_t stride = list_.stride;
@@ -824,28 +920,93 @@ void MpmSolver<Dim>::checkTorn() {
                 if (b != a) pieceParent_[b] = a;
             }
     }
-    // Each body's main piece is its largest; a particle of any other piece is torn off.
-    pieceSize_.assign(grid_.nodeCount(), 0);
+    // A piece is named by the lowest global id among its particles here (owned and halo).
     auto& root = pieceRoot_;
     root.resize(n);
-    for (std::size_t p = 0; p < n; ++p) ++pieceSize_[root[p] = find(firstNode(p))];
-    const auto& region = particles_->region();
-    std::int64_t regions = 0;
-    for (std::size_t p = 0; p < n; ++p) regions = std::max(regions, region[p] + 1);
-    std::vector<std::size_t> mainRoot(std::size_t(std::max<std::int64_t>(regions, 0)), 0),
-        best(mainRoot.size(), 0);
+    const auto& id = particles_->globalId();
+    const std::int64_t none = std::numeric_limits<std::int64_t>::max();
+    pieceLabel_.assign(grid_.nodeCount(), none);
     for (std::size_t p = 0; p < n; ++p) {
-        if (region[p] < 0) continue;
-        const auto r = std::size_t(region[p]);
-        if (pieceSize_[root[p]] > best[r]) best[r] = pieceSize_[root[p]], mainRoot[r] = root[p];
+        root[p] = find(firstNode(p));
+        pieceLabel_[root[p]] = std::min(pieceLabel_[root[p]], id[p]);
     }
-    auto torn = [&](std::size_t p) { return region[p] >= 0 && root[p] != mainRoot[std::size_t(region[p])]; };
-    Solver::checkState("particleToGrid", n, torn, [&](std::size_t p, double count) {
+    // Several ranks: a rank's piece holding a halo particle is the same body piece as its owner's
+    // piece holding it (every two particles sharing a node are both held by the owner of either),
+    // so the pieces join through the halo's labels as their owners have them: a few pairs of
+    // labels, gathered everywhere and joined (union-find over labels, the lowest naming each).
+    std::map<std::int64_t, std::int64_t> joined;  // label -> a lower label of the same piece
+    auto findLabel = [&](std::int64_t a) {
+        for (auto it = joined.find(a); it != joined.end(); it = joined.find(a)) a = it->second;
+        return a;
+    };
+    const std::size_t owned = ownedCount();
+    if (decomposition_) {
+        std::vector<std::int64_t> ownerLabel(n);
+        for (std::size_t p = 0; p < n; ++p) ownerLabel[p] = pieceLabel_[root[p]];
+        particles_->refreshHalo(ownerLabel.data(), sizeof(std::int64_t));
+        std::vector<std::pair<std::int64_t, std::int64_t>> local;
+        for (std::size_t h = owned; h < n; ++h)
+            if (ownerLabel[h] != pieceLabel_[root[h]]) local.emplace_back(pieceLabel_[root[h]], ownerLabel[h]);
+        std::sort(local.begin(), local.end());
+        local.erase(std::unique(local.begin(), local.end()), local.end());
+        std::vector<std::int64_t> flat;
+        for (const auto& [a, b] : local) flat.push_back(a), flat.push_back(b);
+        const std::vector<std::int64_t> all = globalConcatenation(flat);
+        for (std::size_t k = 0; k + 1 < all.size(); k += 2) {
+            const std::int64_t a = findLabel(all[k]), b = findLabel(all[k + 1]);
+            if (a != b) joined[std::max(a, b)] = std::min(a, b);
+        }
+    }
+    // Per piece: its particles (every region) and, per region, its lowest id, over all ranks;
+    // a body's main piece is its largest, ties to the one holding the body's lowest id (the serial
+    // run's first in index order); a particle of any other piece is torn off.
+    std::map<std::int64_t, std::int64_t> size;                                  // label -> particles
+    std::map<std::pair<std::int64_t, std::int64_t>, std::int64_t> regionFirst;  // (label, region) -> id
+    const auto& region = particles_->region();
+    std::vector<std::int64_t> label(owned);
+    {
+        std::size_t lastRoot = std::numeric_limits<std::size_t>::max();
+        std::int64_t lastLabel = 0;
+        for (std::size_t p = 0; p < owned; ++p) {
+            if (root[p] != lastRoot) lastRoot = root[p], lastLabel = findLabel(pieceLabel_[root[p]]);
+            label[p] = lastLabel;
+            ++size[lastLabel];
+            auto [it, fresh] = regionFirst.try_emplace({lastLabel, region[p]}, id[p]);
+            if (!fresh) it->second = std::min(it->second, id[p]);
+        }
+    }
+    if (decomposition_) {
+        std::vector<std::int64_t> flat;
+        for (const auto& [l, c] : size) flat.push_back(l), flat.push_back(c);
+        const std::vector<std::int64_t> sizes = globalConcatenation(flat);
+        size.clear();
+        for (std::size_t k = 0; k + 1 < sizes.size(); k += 2) size[sizes[k]] += sizes[k + 1];
+        flat.clear();
+        for (const auto& [key, first] : regionFirst) flat.push_back(key.first), flat.push_back(key.second), flat.push_back(first);
+        const std::vector<std::int64_t> firsts = globalConcatenation(flat);
+        regionFirst.clear();
+        for (std::size_t k = 0; k + 2 < firsts.size(); k += 3) {
+            auto [it, fresh] = regionFirst.try_emplace({firsts[k], firsts[k + 1]}, firsts[k + 2]);
+            if (!fresh) it->second = std::min(it->second, firsts[k + 2]);
+        }
+    }
+    struct Main {
+        std::int64_t label, size, first;
+    };
+    std::map<std::int64_t, Main> mainPiece;  // region -> its main piece
+    for (const auto& [key, first] : regionFirst) {
+        if (key.second < 0) continue;
+        Main& m = mainPiece.try_emplace(key.second, Main{0, 0, none}).first->second;
+        const std::int64_t s = size[key.first];
+        if (s > m.size || (s == m.size && first < m.first)) m = {key.first, s, first};
+    }
+    auto torn = [&](std::size_t p) { return region[p] >= 0 && label[p] != mainPiece.at(region[p]).label; };
+    Solver::checkState("particleToGrid", owned, torn, [&](std::size_t p, double count) {
         std::ostringstream s;
-        s << "body " << bodyName(p) << " has torn apart: particle " << particles_->globalId()[p] << " at "
-          << vectorText<Dim>(x_[p]) << " is in a piece of " << pieceSize_[root[p]]
+        s << "body " << bodyName(p) << " has torn apart: particle " << id[p] << " at "
+          << vectorText<Dim>(x_[p]) << " is in a piece of " << size.at(label[p])
           << " particle(s) that shares no grid node with the body's main piece ("
-          << best[std::size_t(region[p])]
+          << mainPiece.at(region[p]).size
           << " particles): numerical fracture, the extension instability of doc/methods/mpm.md section "
              "6.2; "
           << count
@@ -861,7 +1022,7 @@ void MpmSolver<Dim>::checkFinite(const char* phaseName) const {
         return !x_[i].allFinite() || !v_[i].allFinite() || !(*F_)[i].allFinite() || !((*J_)[i] > 0) ||
                !(*sigma_)[i].full().allFinite();
     };
-    Solver::checkState(phaseName, x_.size(), bad, [&](std::size_t i, double count) {
+    Solver::checkState(phaseName, ownedCount(), bad, [&](std::size_t i, double count) {
         std::ostringstream s;
         s.precision(6);
         s << "particle " << particles_->globalId()[i] << " (body " << bodyName(i) << ", material "
@@ -902,8 +1063,12 @@ void MpmSolver<Dim>::correctContact(double dt, bool afterForce, double t) {
     nodes.massCutoff = massCutoff_;
     nodes.cellSize = grid_.smallestCellSize();
     nodes.cellVolume = grid_.cellSize().prod();
-    const std::vector<Vector<Dim>> force = contact_->correct(nodes, dt);
+    if (!ownedNode_.empty()) nodes.countedNodes = &ownedNode_;
+    std::vector<Vector<Dim>> force = contact_->correct(nodes, dt);
     if (!afterForce || force.empty()) return;
+    if (decomposition_)
+        for (auto& F : force)
+            for (int d = 0; d < Dim; ++d) F[d] = globalSum(F[d]);
     // One row a step: time, then per pair (a, b) the force on a from b and its magnitude.
     const std::size_t B = bodyNames_.size();
     if (!contactCsv_) {
@@ -937,6 +1102,21 @@ void MpmSolver<Dim>::correctContact(double dt, bool afterForce, double t) {
 template <int Dim>
 void MpmSolver<Dim>::step(double dt) {
     const double t = time().value();
+    // Several ranks: the halo for this step's sums, removed however the step ends (a diagnosis
+    // throws from a state check: the state written then is the owned particles').
+    struct HaloScope {
+        ParticleSetBase* set = nullptr;
+        ~HaloScope() {
+            if (set) set->clearGhosts();
+        }
+    } halo;
+    if (decomposition_) {
+        updateDecomposition();
+        auto timed = phase("shapeFunctions");
+        decomposition_->appendHalo(*particles_, haloFields_);
+        halo.set = particles_;
+    }
+    ++steps_;
     const double kineticStart = particleKinetic();
     evaluateShapeFunctions();
     {
@@ -951,6 +1131,9 @@ void MpmSolver<Dim>::step(double dt) {
         nodeVelocityFromMomentum(t);
         updateStress(dt, true);
         smoothPressure();
+        // The forces read the halo's new J and sigma.
+        particles_->refreshHalo(J_->data(), sizeof(double));
+        particles_->refreshHalo(sigma_->data(), sizeof(SymmTensor<Dim>));
     }
     {
         auto timed = phase("particleToGrid");
@@ -966,6 +1149,10 @@ void MpmSolver<Dim>::step(double dt) {
     if (order == MpmScheme::StressUpdate::modifiedLast) {
         // MUSL: the updated particle velocities mapped back, v_I = sum N m v_p^{n+1} / m_I.
         auto timed = phase("particleToGrid");
+        // The map reads the halo's moved x, v (and C) of this step's G2P.
+        particles_->refreshHalo(x_.data(), sizeof(Vector<Dim>));
+        particles_->refreshHalo(v_.data(), sizeof(Vector<Dim>));
+        if (C_) particles_->refreshHalo(C_->data(), sizeof(Tensor<Dim>));
         mapMassAndMomentum();
         nodeVelocityFromMomentum(t + dt);
     }
@@ -973,23 +1160,22 @@ void MpmSolver<Dim>::step(double dt) {
         updateStress(dt, true);
         smoothPressure();
     }
-    particleSteps_ += std::int64_t(x_.size());
+    particleSteps_ += std::int64_t(ownedCount());
     checkFinite("step");
 }
 
 template <int Dim>
 double MpmSolver<Dim>::particleKinetic() const {
-    return GlobalReduce::sum<double>(x_.size(),
+    return GlobalReduce::sum<double>(ownedCount(),
                                      [&](std::size_t i) { return 0.5 * m_[i] * v_[i].squaredNorm(); });
 }
 
 template <int Dim>
 double MpmSolver<Dim>::gridKinetic() const {
-    // The nodes the solve updates (m_I >= massCutoff; the others' v is 0). A grid split over ranks
-    // would sum the nodes each owns.
+    // The nodes the solve updates (m_I >= massCutoff; the others' v is 0), each counted by one rank.
     auto kinetic = [&](const std::vector<double>& m, const std::vector<Vector<Dim>>& v) {
         return GlobalReduce::sum<double>(v.size(), [&](std::size_t I) {
-            return m[I] >= massCutoff_ ? 0.5 * m[I] * v[I].squaredNorm() : 0.0;
+            return m[I] >= massCutoff_ && countsNode(I) ? 0.5 * m[I] * v[I].squaredNorm() : 0.0;
         });
     };
     if (!multi_) return kinetic(*nodeMass_, *nodeVelocity_);
@@ -1020,25 +1206,40 @@ std::vector<HealthIndicator> MpmSolver<Dim>::healthIndicators() const {
         "|grad N_Ip|^2 / m_I (the node's Rayleigh quotient); counted: particles reaching a "
         "node above 1, where the explicit step is unstable (the small-mass problem, "
         "Sulsky et al. 1995)"};
-    const std::size_t n = x_.size(), nodes = grid_.nodeCount(), stride = list_.stride;
+    // Between steps the set holds the owned particles; the list and the colouring are the last
+    // step's, over the owned and (several ranks) the halo particles, whose m c^2 and body come
+    // from their owners (the halo plan is the last step's: particles migrate at a step's start).
+    const std::size_t n = ownedCount(), nodes = grid_.nodeCount(), stride = list_.stride;
+    const std::size_t listed = list_.count.size();
     const std::size_t fields = multi_ ? bodyMass_.size() : 1;
     const double dt = time().deltaT();
     std::vector<double> stiffness(fields * nodes, 0.0);
-    const bool mapped = list_.count.size() == n && time().timeIndex() > 0;
-    if (mapped)
+    const bool mapped = time().timeIndex() > 0 &&
+                        listed == n + (decomposition_ ? decomposition_->haloSize() : std::size_t(0));
+    std::vector<double> mc2(listed, 0.0);
+    std::vector<std::int64_t> body(multi_ ? listed : 0, 0);
+    if (mapped) {
+        for (std::size_t p = 0; p < n; ++p) mc2[p] = m_[p] * waveSpeed(p) * waveSpeed(p);
+        if (multi_) std::copy(region_->begin(), region_->begin() + std::ptrdiff_t(n), body.begin());
+        if (decomposition_) {
+            decomposition_->refresh(mc2.data(), sizeof(double), n);
+            if (multi_) decomposition_->refresh(body.data(), sizeof(std::int64_t), n);
+        }
         colouring_.forEachParticle([&](std::size_t p) {
-            const std::size_t offset = multi_ ? std::size_t((*region_)[p]) * nodes : 0;
-            const double mc2 = m_[p] * waveSpeed(p) * waveSpeed(p);
+            const std::size_t offset = multi_ ? std::size_t(body[p]) * nodes : 0;
             const std::size_t base = p * stride;
             for (std::size_t k = 0; k < list_.count[p]; ++k)
-                stiffness[offset + list_.node[base + k]] += mc2 * list_.gradient[base + k].squaredNorm();
+                stiffness[offset + list_.node[base + k]] += mc2[p] * list_.gradient[base + k].squaredNorm();
         });
+    }
     auto massOf = [&](std::size_t j) { return multi_ ? bodyMass_[j / nodes][j % nodes] : (*nodeMass_)[j]; };
+    // Complete at every node an owned particle reaches; the largest is taken over the nodes each
+    // rank counts (the others may be short of particles here).
     auto number = [&](std::size_t j) {
         const double m = massOf(j);
         return mapped && m >= massCutoff_ ? 0.5 * dt * std::sqrt(stiffness[j] / m) : 0.0;
     };
-    indicator.value = GlobalReduce::max(fields * nodes, number);
+    indicator.value = GlobalReduce::max(fields * nodes, [&](std::size_t j) { return countsNode(j % nodes) ? number(j) : 0.0; });
     // The largest number over the nodes particle p reaches (N_Ip > 0).
     auto reached = [&](std::size_t p) {
         if (!mapped) return 0.0;
@@ -1078,7 +1279,49 @@ std::optional<double> MpmSolver<Dim>::potentialEnergy() const {
 template <int Dim>
 std::vector<ExtraFile> MpmSolver<Dim>::extraOutput() const {
     if (!writeGrid_) return {};
-    return {vtiFile(grid_, time().value(), "grid.vti", {"mass", "momentum", "velocity", "force"})};
+    const std::vector<std::string> fields{"mass", "momentum", "velocity", "force"};
+    if (!decomposition_) return {vtiFile(grid_, time().value(), "grid.vti", fields)};
+    return {vtiFile(gatheredGrid(fields), time().value(), "grid.vti", fields)};
+}
+
+template <int Dim>
+CartesianGrid<Dim> MpmSolver<Dim>::gatheredGrid(const std::vector<std::string>& fields) const {
+    // One image of the whole grid, as the serial run writes it (a rank's nodes are no box, so
+    // there are no .vti pieces to index in a .pvti): each node from the rank that counts it, the
+    // nodes no particle reaches from this rank's own arrays (zero, or what a grid condition set:
+    // the same on every rank). The values travel as their bits (exact).
+    CartesianGrid<Dim> whole(grid_.origin(), grid_.cellSize(), grid_.cells());
+    const FieldStore& mine = grid_.nodes();
+    FieldStore& out = whole.nodes();
+    std::vector<std::int64_t> packed;
+    for (const auto& name : fields) {
+        if (name == "mass") {
+            const auto& local = mine.requireField<double>(name);
+            auto& all = out.field<double>(name);
+            all = local;
+            packed.clear();
+            for (std::size_t I = 0; I < local.size(); ++I)
+                if (countsNode(I)) packed.push_back(std::int64_t(I)), packed.push_back(std::bit_cast<std::int64_t>(local[I]));
+            const auto gathered = globalConcatenation(packed);
+            for (std::size_t k = 0; k + 1 < gathered.size(); k += 2)
+                all[std::size_t(gathered[k])] = std::bit_cast<double>(gathered[k + 1]);
+            continue;
+        }
+        const auto& local = mine.requireField<Vector<Dim>>(name);
+        auto& all = out.field<Vector<Dim>>(name);
+        all = local;
+        packed.clear();
+        for (std::size_t I = 0; I < local.size(); ++I) {
+            if (!countsNode(I)) continue;
+            packed.push_back(std::int64_t(I));
+            for (int d = 0; d < Dim; ++d) packed.push_back(std::bit_cast<std::int64_t>(local[I][d]));
+        }
+        const auto gathered = globalConcatenation(packed);
+        for (std::size_t k = 0; k + Dim < gathered.size(); k += Dim + 1)
+            for (int d = 0; d < Dim; ++d)
+                all[std::size_t(gathered[k])][d] = std::bit_cast<double>(gathered[k + 1 + std::size_t(d)]);
+    }
+    return whole;
 }
 
 template <int Dim>
@@ -1102,6 +1345,8 @@ std::vector<std::string> MpmSolver<Dim>::summary(double loopSeconds) const {
                 peakContactForce_, peakContactPair_.c_str(), peakContactTime_);
         lines.push_back(line);
     }
+    if (decomposition_)
+        for (auto& l : decomposition_->summary(*particles_, double(steps_), "step")) lines.push_back(std::move(l));
     if (removedParticles_ > 0) {
         std::snprintf(line, sizeof line,
                       "outsideGrid remove   %zu particles, %.6g kg (%.4g%% of the initial mass)",

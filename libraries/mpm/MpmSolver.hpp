@@ -77,6 +77,8 @@
 
 namespace mfdyn {
 
+class Decomposition;
+
 template <int Dim>
 class MpmSolver final : public Solver {
 public:
@@ -84,6 +86,8 @@ public:
     ~MpmSolver() override;
     static constexpr const char* propertiesDictionary = "mpmProperties";
     static KeywordSchema keywords();
+    // Runs on several ranks (issue 21; "Several ranks" in MpmSolver.cpp).
+    static constexpr bool runsOnSeveralRanks = true;
 
     void preStep() override;
     TimeStepVote stableTimeStep() override;
@@ -123,6 +127,16 @@ private:
     // sees a piece of one particle only. Union-find over the nodes (pieceParent_), rank-local.
     void checkTorn();
     void checkFinite(const char* phaseName) const;
+    // Several ranks (MpmSolver.cpp, "Several ranks"): the particles migrate to their owners and the
+    // halo is planned again when they have moved far enough (at a step's start); the nodes this
+    // rank counts in the grid sums (ownedNode_) are marked after the shape functions.
+    void updateDecomposition();
+    void markOwnedNodes();
+    bool countsNode(std::size_t node) const { return ownedNode_.empty() || ownedNode_[node] != 0; }
+    std::size_t ownedCount() const { return particles_->ownedCount(); }
+    // The grid's node fields as the serial run has them, every node from the rank that counts it
+    // (collective; writeGrid on several ranks).
+    CartesianGrid<Dim> gatheredGrid(const std::vector<std::string>& fields) const;
     // The p-wave speed of particle i's material (an equation of state's: the particle's own).
     double waveSpeed(std::size_t i) const;
     std::vector<double> materialWaveSpeed_;  // per material (0 for an equation of state's)
@@ -191,8 +205,22 @@ private:
     ParticleColouring<Dim> colouring_;
     std::vector<Vector<Dim>> halfSize_;  // uGIMP: half the particle's extent, 0.5 V0^(1/Dim)
     std::vector<Vector<Dim>> nodeX_;     // the node positions (APIC's x_I - x_p), made once
-    std::vector<std::size_t> pieceParent_, pieceSize_, pieceRoot_;  // checkTorn: union-find, sizes, roots
+    std::vector<std::size_t> pieceParent_, pieceRoot_;  // checkTorn: union-find over nodes, roots
+    std::vector<std::int64_t> pieceLabel_;              // checkTorn: per root node, the lowest id
     std::int64_t particleSteps_ = 0;
+
+    // Several ranks: the decomposition (SolverRun's; null on one), the fields a halo particle
+    // brings to the particle-to-grid sums, the halo's width (two supports plus the skin), the
+    // owned positions at the last migration, a re-plan owed after outsideGrid remove, and per node
+    // whether this rank counts it (the owner of its lowest-id particle does).
+    Decomposition* decomposition_ = nullptr;
+    std::vector<std::string> haloFields_;
+    double haloWidth_ = 0, skin_ = 0;
+    std::vector<Vector<Dim>> xAtMigration_;
+    bool replan_ = false;
+    std::vector<char> ownedNode_;
+    std::vector<std::int64_t> nodeFirstId_;
+    std::int64_t steps_ = 0;
 
     // The energy budget (step()): the kinetic energy the transfers lose, and the work of the grid
     // conditions and the damping, summed since construction; the grid kinetic energies of the step.

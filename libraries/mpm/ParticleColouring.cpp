@@ -8,7 +8,7 @@ namespace mfdyn {
 
 template <int Dim>
 void ParticleColouring<Dim>::build(const CartesianGrid<Dim>& grid, std::span<const Vector<Dim>> x,
-                                   const ParticleNodeList<Dim>& list) {
+                                   const ParticleNodeList<Dim>& list, std::span<const std::int64_t> globalId) {
     const std::size_t n = x.size();
     const auto& cells = grid.cells();
     stride_ = std::max<std::size_t>(1, list.stride);
@@ -41,6 +41,15 @@ void ParticleColouring<Dim>::build(const CartesianGrid<Dim>& grid, std::span<con
     {
         std::vector<std::size_t> next(tileStart_.begin(), tileStart_.end() - 1);
         for (std::size_t p = 0; p < n; ++p) order_[next[tileOfParticle_[p]]++] = p;
+    }
+    // Each tile's particles in global-id order (already so when the indices follow the ids).
+    if (globalId.size() >= n) {
+        auto byId = [&](std::size_t a, std::size_t b) { return globalId[a] < globalId[b]; };
+        parallelFor(tileCount, [&](std::size_t t) {
+            const auto first = order_.begin() + std::ptrdiff_t(tileStart_[t]);
+            const auto last = order_.begin() + std::ptrdiff_t(tileStart_[t + 1]);
+            if (!std::is_sorted(first, last, byId)) std::sort(first, last, byId);
+        });
     }
     colourTiles_.assign(std::size_t(1) << Dim, {});
     for (std::size_t t = 0; t < tileCount; ++t) {

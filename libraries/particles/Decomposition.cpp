@@ -229,6 +229,30 @@ void Decomposition::refresh(void* data, std::size_t elementBytes, std::size_t fi
     messagesSent_ += sendRanks_.size();
 }
 
+std::vector<std::string> Decomposition::summary(const ParticleSetBase& particles, double evaluations,
+                                               const std::string& evaluation) const {
+    const double ranks = globalSum(1.0);
+    const double owned = globalSum(double(particles.ownedCount()));
+    const double halo = globalSum(double(haloSize_));
+    const double bytes = globalSum(double(bytesSent_));
+    const double messages = globalSum(double(messagesSent_));
+    evaluations = std::max(1.0, evaluations);
+    char line[240];
+    std::vector<std::string> lines;
+    std::snprintf(line, sizeof line,
+                  "decomposition        %.0f ranks (%s), %d migrations, %d partitions; halo %.0f particles "
+                  "(%.3g of the owned)",
+                  ranks, partitioner_->method().c_str(), migrations_, rebalances_, halo,
+                  owned > 0 ? halo / owned : 0.0);
+    lines.emplace_back(line);
+    std::snprintf(line, sizeof line,
+                  "halo traffic         %.4g bytes per particle and %.3g messages per rank per %s (%.0f)",
+                  owned > 0 ? bytes / owned / evaluations : 0.0, messages / ranks / evaluations, evaluation.c_str(),
+                  evaluations);
+    lines.emplace_back(line);
+    return lines;
+}
+
 std::string Decomposition::report(const ParticleSetBase& particles, const std::vector<double>& weights) const {
     struct Row {
         double owned, halo, weight;

@@ -66,6 +66,12 @@ public:
     // Collective. Per rank: owned particles, halo, weight over the mean; for the log.
     std::string report(const ParticleSetBase& particles, const std::vector<double>& weights) const;
     const Partitioner& partitioner() const { return *partitioner_; }
+    // Collective. The summary's two lines (what a weak-scaling model needs, bench/mpi): ranks,
+    // migrations, partitions and the halo over the owned particles; the halo bytes per particle
+    // and messages per rank per `evaluation` (a rate evaluation, a step: the caller's unit),
+    // over all ranks.
+    std::vector<std::string> summary(const ParticleSetBase& particles, double evaluations,
+                                     const std::string& evaluation) const;
 
 private:
     void sendTo(ParticleSetBase& particles, const std::vector<int>& destination);

@@ -1166,27 +1166,9 @@ std::vector<std::string> SphSolver<Dim>::summary(double loopSeconds) const {
             ghostLayerBuilds_, neighbourUpdates_, keptGhosts_.size());
         lines.emplace_back(line);
     }
-    if (decomposition_) {
-        // The communication a weak-scaling model needs (bench/mpi): halo bytes per particle and
-        // messages per rank, per rate evaluation, over all ranks.
-        const double ranks = globalSum(1.0);
-        const double owned = globalSum(double(particles_->ownedCount()));
-        const double halo = globalSum(double(decomposition_->haloSize()));
-        const double bytes = globalSum(double(decomposition_->bytesSent()));
-        const double messages = globalSum(double(decomposition_->messagesSent()));
-        const double evaluations = std::max<double>(1.0, double(neighbourUpdates_));
-        std::snprintf(line, sizeof line,
-                      "decomposition        %.0f ranks (%s), %d migrations, %d partitions; halo %.0f particles "
-                      "(%.3g of the owned)",
-                      ranks, decomposition_->partitioner().method().c_str(), decomposition_->migrations(),
-                      decomposition_->rebalances(), halo, owned > 0 ? halo / owned : 0.0);
-        lines.emplace_back(line);
-        std::snprintf(line, sizeof line,
-                      "halo traffic         %.4g bytes per particle and %.3g messages per rank per rate evaluation "
-                      "(%.0f evaluations)",
-                      owned > 0 ? bytes / owned / evaluations : 0.0, messages / ranks / evaluations, evaluations);
-        lines.emplace_back(line);
-    }
+    if (decomposition_)
+        for (auto& l : decomposition_->summary(*particles_, double(neighbourUpdates_), "rate evaluation"))
+            lines.push_back(std::move(l));
     return lines;
 }
 

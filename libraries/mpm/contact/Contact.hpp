@@ -50,6 +50,8 @@ struct ContactNodes {
     double massCutoff = 1e-10;  // a body takes part at a node where its mass is at least this
     double cellSize = 1.0;      // the grid's smallest spacing (the position check's unit)
     double cellVolume = 1.0;    // the product of the spacings: int N_I dV at a node off the edges
+    // Several ranks: the nodes whose pair forces this rank adds (each node on one rank); null: all.
+    const std::vector<char>* countedNodes = nullptr;
 };
 
 template <int Dim>

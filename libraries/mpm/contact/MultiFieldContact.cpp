@@ -255,7 +255,8 @@ std::vector<Vector<Dim>> MultiFieldContact<Dim>::correct(ContactNodes<Dim>& s, d
             if (forces) {
                 (*s.acceleration)[a][I] += dv / dt;
                 // Counted once, on the pair's first body: its partner's correction is the reaction.
-                if (a < o) force[Contact<Dim>::pairIndex(a, o, B)] += (m[a][I] / dt) * dv;
+                if (a < o && (!s.countedNodes || (*s.countedNodes)[I]))
+                    force[Contact<Dim>::pairIndex(a, o, B)] += (m[a][I] / dt) * dv;
             }
         }
     }
