@@ -82,8 +82,8 @@
 // the rank that owns the lowest-id particle reaching it (ownedNode_); they agree with the serial
 // run to round-off (rank-order sums of per-rank partials), the particle state to the bit. The
 // torn-body check joins each rank's pieces through the halo particles' labels from their owners
-// (checkTorn). pressureSmoothing (cell averages over a bucket in index order) is refused on
-// several ranks.
+// (checkTorn). pressureSmoothing averages over a cell's particles in global-id order, with the
+// halo's x and J refreshed first.
 #include "mpm/MpmSolver.hpp"
 
 #include "core/KeywordSchema.hpp"
@@ -194,11 +194,6 @@ MpmSolver<Dim>::MpmSolver(SolverRun& run)
     initialiseFields();
     decomposition_ = run.decomposition();
     if (decomposition_) {
-        if (smoothing_->active())
-            throw properties_.error("pressureSmoothing",
-                                    "pressureSmoothing " + smoothing_->describe() +
-                                        " does not run on several ranks yet (its cell averages are not "
-                                        "exchanged): run serially, or choose pressureSmoothing none");
         haloFields_ = {"position", "velocity", "mass", "density", "jacobian", "cauchyStress", "material", "region"};
         if (C_) haloFields_.push_back("affineVelocity");
         // Planned now: the decomposition's report in the log before the first step.
@@ -838,6 +833,10 @@ template <int Dim>
 void MpmSolver<Dim>::smoothPressure() {
     if (!smoothing_->active() || !ul_->any()) return;
     auto timed = phase("stress");
+    // A cell's mean reads its halo particles' J where they are now (USL and MUSL: after the
+    // G2P); what the pass writes into the halo is discarded (the next step appends it afresh).
+    particles_->refreshHalo(x_.data(), sizeof(Vector<Dim>));
+    particles_->refreshHalo(J_->data(), sizeof(double));
     PressureSmoothingFields<Dim> f;
     f.position = x_;
     f.mass = m_;
@@ -850,6 +849,7 @@ void MpmSolver<Dim>::smoothPressure() {
     f.smoothed = [this](std::int64_t k) { return ul_->isFluid(k); };
     f.pressureAt = [this](std::size_t p, double J) { return ul_->pressureAt(p, J, rho0_[p]); };
     if (auto* pressure = ul_->pressureField()) f.pressure = *pressure;
+    f.globalId = particles_->globalId();
     smoothing_->apply(grid_, f);
 }
 

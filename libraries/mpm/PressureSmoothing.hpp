@@ -49,6 +49,10 @@ struct PressureSmoothingFields {
     // Optional: the particles' stored pressure field (written and used as p^n by the next energy
     // update); a model that changes a particle's pressure writes it here when it is given.
     std::span<double> pressure;
+    // Optional: the particles' global ids; a cell's particles are then summed in id order (the
+    // serial run's index order), so that a rank, which numbers its owned and halo particles
+    // otherwise, has the serial bits (issue 21).
+    std::span<const std::int64_t> globalId;
 };
 
 template <int Dim>

@@ -53,6 +53,15 @@ void CellBuckets<Dim>::build(const CartesianGrid<Dim>& grid, const PressureSmoot
         if (key_[p] != none) order_[start_[key_[p]]++] = std::uint32_t(p);
     for (std::size_t k = keys; k > 0; --k) start_[k] = start_[k - 1];
     start_[0] = 0;
+    // In global-id order when the ids are given (already so where the indices follow the ids).
+    if (f.globalId.size() >= n) {
+        auto byId = [&](std::uint32_t a, std::uint32_t b) { return f.globalId[a] < f.globalId[b]; };
+        parallelFor(nonEmpty_.size(), [&](std::size_t b) {
+            const auto first = order_.begin() + std::ptrdiff_t(start_[nonEmpty_[b]]);
+            const auto last = order_.begin() + std::ptrdiff_t(start_[nonEmpty_[b] + 1]);
+            if (!std::is_sorted(first, last, byId)) std::sort(first, last, byId);
+        });
+    }
 }
 
 template class CellBuckets<1>;

@@ -2,7 +2,8 @@
 // The fluid particles of PressureSmoothingFields grouped by grid cell and material, for the cell
 // averages of cellPressure and cellJacobian: a counting sort of the particles by the key
 // cell * materials + material. Deterministic: each bucket lists its particles in increasing index
-// (the fill is one ordered pass), so the sums over a bucket are the same for any thread count.
+// (the fill is one ordered pass), or in increasing global id when the fields give the ids, so the
+// sums over a bucket are the same for any thread count (and any number of ranks).
 // The buffers are kept between steps (no allocation once the sizes are reached).
 #include "grid/CartesianGrid.hpp"
 #include "mpm/PressureSmoothing.hpp"

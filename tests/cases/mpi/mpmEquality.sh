@@ -7,7 +7,9 @@
 #     gathered grid.vti must be the serial file byte for byte, and the summary's peak pair force
 #     the serial one (a sum over the nodes each rank counts);
 #   - the dam break (quadratic B-splines, flipPic, gravity, slip and fixed grid conditions, a fluid
-#     equation of state) with USF (the halo's J and sigma refreshed before the forces), to 0.05 s;
+#     equation of state) with USF (the halo's J and sigma refreshed before the forces), to 0.05 s,
+#     and with USL and pressureSmoothing cellJacobian (a cell's mean J over its particles in id
+#     order, the halo's x and J refreshed first);
 #   - the hanging block that tears (5 x 5 points on the 8 x 8 grid): the torn-body diagnosis on
 #     2 and 3 ranks is the serial one, word for word (the pieces joined across ranks);
 #   - a restart: the disks to 0.9 on 3 ranks, on to 1.5 on 2, against the serial run straight.
@@ -38,17 +40,22 @@ dam="$WORK/dam"
 tutorial damBreak "$dam"
 endTime "$dam" 0.05 0.05
 sed -i 's/^scheme .*/scheme          USF;/' "$dam/constant/mpmProperties"
+smooth="$WORK/smooth"
+tutorial damBreak "$smooth"
+endTime "$smooth" 0.05 0.05
+sed -i 's/^pressureSmoothing .*/pressureSmoothing cellJacobian;/' "$smooth/constant/mpmProperties"
 block="$WORK/block"
 tutorial hangingBlock "$block"
 mfDictionary "$block/system/particleGenDict" -entry regions/block/lattice/cells -set "(5 5)" > /dev/null
-for c in "$disks" "$multi" "$dam" "$block"; do
+for c in "$disks" "$multi" "$dam" "$smooth" "$block"; do
     grep -q "^scheme" "$c/constant/mpmProperties" || fail "$(basename "$c"): no scheme entry to set"
     particleGen -case "$c" > "$c/log.particleGen" 2>&1 || fail "particleGen: $(tail -3 "$c/log.particleGen")"
 done
 grep -q "^scheme          USF;" "$dam/constant/mpmProperties" || fail "the dam break's scheme was not set to USF"
 grep -q "^contact         multiField;" "$multi/constant/mpmProperties" || fail "the disks' contact was not set to multiField"
+grep -q "^pressureSmoothing cellJacobian;" "$smooth/constant/mpmProperties" || fail "the dam break's pressureSmoothing was not set"
 
-for c in "$disks" "$multi" "$dam"; do
+for c in "$disks" "$multi" "$dam" "$smooth"; do
     name=$(basename "$c")
     serial=$(copyCase "$c" "$WORK/$name.serial")
     mpmFsi -case "$serial" > "$serial/log.mpmFsi" 2>&1 || fail "$name serially: $(tail -5 "$serial/log.mpmFsi")"
