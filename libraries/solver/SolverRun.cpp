@@ -516,14 +516,24 @@ void SolverRun::summary(const Solver& solver, double steppingSeconds, std::int64
     if (stepsRun != time.timeIndex()) s << " (from step " << time.timeIndex() - stepsRun << ")";
     s << "\n";
     s << "    particles            " << n << "\n";
-    std::snprintf(line, sizeof line, "    particle-steps/s     %.4g (%d threads)\n",
-                  steppingSeconds > 0 ? double(n) * double(stepsRun) / steppingSeconds : 0.0, threadCount());
+    // On several ranks: the wall times are rank 0's, the phase times and the memory the largest
+    // over the ranks (the slowest rank sets the pace; every rank reaches these reductions, whatever
+    // phases it skipped).
+    const int ranks = Communicator::size();
+    const std::string workers = ranks > 1 ? std::to_string(ranks) + " ranks x " + std::to_string(threadCount()) + " threads"
+                                          : std::to_string(threadCount()) + " threads";
+    std::snprintf(line, sizeof line, "    particle-steps/s     %.4g (%s)\n",
+                  steppingSeconds > 0 ? double(n) * double(stepsRun) / steppingSeconds : 0.0, workers.c_str());
     s << line;
-    s << "    peak memory          " << formatBytes(double(peakMemoryBytes())) << "\n";
+    s << "    peak memory          " << formatBytes(globalMax(double(peakMemoryBytes())))
+      << (ranks > 1 ? " (the largest rank's)" : "") << "\n";
     // A phase the scene does not need is never entered: named once, not timed at 0 s. (A solver's
     // phaseTimes may decorate a name, "updateNeighbours (84 rebuilds)": its first word is the phase.)
     const std::vector<std::string> skipped = solver.skippedPhases();
-    for (const auto& [phase, seconds] : solver.phaseTimes()) {
+    auto phases = solver.phaseTimes();
+    for (auto& phase : phases) phase.second = globalMax(phase.second);
+    if (ranks > 1) s << "    phase times          the slowest rank's\n";
+    for (const auto& [phase, seconds] : phases) {
         if (std::find(skipped.begin(), skipped.end(), phase.substr(0, phase.find(' '))) != skipped.end())
             continue;
         std::snprintf(line, sizeof line, "    phase %-14s %s (%.1f%%)\n", phase.c_str(),
