@@ -84,7 +84,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
+#include <numeric>
 #include <sstream>
 #include <type_traits>
 
@@ -491,10 +493,6 @@ FpmSolver<Dim>::FpmSolver(SolverRun& run)
             "evolve");
     decomposition_ = run.decomposition();
     if (decomposition_) {
-        if (management_)
-            throw properties_.error("particleManagement",
-                                    "particle management does not run on several ranks yet: run this case "
-                                    "on one rank, or without particleManagement");
         // What the fits read of a neighbour: its position, and the fields fitted (v by every part,
         // p by the Euler part, S by the shear part); rho, e, c, mu and the material are read of the
         // particle itself only. The halo's v, p and S are refreshed where a stage or a surface
@@ -1237,9 +1235,18 @@ template <int Dim>
 void FpmSolver<Dim>::manageParticles() {
     if constexpr (Dim > 1) {
         auto timed = phase("particleManagement");
+        // Several ranks: the merging and the insertion are sweeps in global-id order whose every
+        // decision depends on the ones before (a particle merged, a hole filled), across the cuts:
+        // they run on the whole set, gathered on every rank in id order (the serial run's order),
+        // so that every rank makes the serial decisions and issues the serial ids; then the set is
+        // cut again. Exact but not scalable (every rank holds the whole set at a management step).
+        if (decomposition_) gatherWholeSet();
         const std::vector<std::int64_t> origin = management_->apply(*owner_, h_, *fitWeight_);
         const auto& last = management_->last();
-        if (last.inserted == 0 && last.merged == 0) return;
+        if (last.inserted == 0 && last.merged == 0) {
+            if (decomposition_) redistribute();
+            return;
+        }
         const std::size_t n = x_.size();
         const std::vector<std::int64_t>* material = owner_->template findField<std::int64_t>("material");
         const auto remap = [&](auto& values, auto fresh) {
@@ -1261,7 +1268,57 @@ void FpmSolver<Dim>::manageParticles() {
             const EquationOfState* eos = (*materials_)[std::size_t((*material)[i])].eos.get();
             return eos ? std::sqrt(std::max(eos->soundSpeedSquared(rho_[i], e_ ? (*e_)[i] : 0.0), 0.0)) : 0.0;
         });
+        if (decomposition_) redistribute();
     }
+}
+
+// Several ranks: every rank's particles, every field and the solver's arrays, on every rank in
+// global-id order, and the next id the largest of the ranks' (above every id any rank issued or
+// held, as one process's). Each field travels as its 8-byte words (every element type is made of
+// doubles or 64-bit integers), concatenated in rank order.
+template <int Dim>
+void FpmSolver<Dim>::gatherWholeSet() {
+    carrySolverArrays(true);
+    const std::size_t n = owner_->ownedCount();
+    std::vector<std::string> names;
+    for (const auto& f : owner_->fields()) names.push_back(f->name());
+    std::sort(names.begin(), names.end());  // the same order on every rank
+    std::vector<std::vector<std::int64_t>> whole;
+    for (const std::string& name : names) {
+        const FieldBase& f = owner_->field(name);
+        if (f.elementBytes() % sizeof(std::int64_t) != 0)
+            throw Error("fpmSolid: field '" + name + "' is not made of 8-byte values; it cannot be gathered");
+        std::vector<std::int64_t> words(n * f.elementBytes() / sizeof(std::int64_t));
+        if (!words.empty()) std::memcpy(words.data(), f.data(), words.size() * sizeof(std::int64_t));
+        whole.push_back(globalConcatenation(words));
+    }
+    const std::int64_t next = std::int64_t(globalMax(double(owner_->nextGlobalId())));
+    const std::size_t total = std::size_t(globalSum(double(n)));
+    owner_->appendMigrated(total - n);
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        FieldBase& f = owner_->field(names[k]);
+        if (!whole[k].empty()) std::memcpy(f.data(), whole[k].data(), whole[k].size() * sizeof(std::int64_t));
+    }
+    const std::vector<std::int64_t>& id = owner_->globalId();
+    std::vector<std::size_t> order(total);
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return id[a] < id[b]; });
+    owner_->reorder(order);
+    owner_->reserveGlobalIdsBelow(next);
+    carrySolverArrays(false);
+    if (shear_) assignShearModuli();  // the whole set's, for the remap of the new particles
+}
+
+// Several ranks, after a management step on the whole set: each rank keeps its share of a new cut,
+// and the halo is planned again at the next step's start.
+template <int Dim>
+void FpmSolver<Dim>::redistribute() {
+    carrySolverArrays(true);
+    decomposition_->distribute(*owner_, "fpmSolid's particle management");
+    carrySolverArrays(false);
+    if (shear_) assignShearModuli();
+    xAtMigration_.clear();  // a migration (none moves) and a new halo plan at the next step
+    boundaryConditions_.updateSelections(*owner_);
 }
 
 // The reach of rows_, in h: growSupport refits within them up to its largest support.
@@ -1308,6 +1365,33 @@ void FpmSolver<Dim>::refreshHalo() {
     if (S_) owner_->copyToGhosts(*S_);
 }
 
+// The solver's per-particle arrays that outlive a step, as temporary fields of the set (toFields)
+// or back (and the fields removed): what carries them through a migration or a gather. Collective.
+template <int Dim>
+void FpmSolver<Dim>::carrySolverArrays(bool toFields) {
+    const auto carry = [&](const char* name, auto& values) {
+        using T = typename std::remove_reference_t<decltype(values)>::value_type;
+        if (!toFields) {
+            if (auto* f = owner_->template findField<T>(name)) {
+                values = *f;
+                owner_->removeField(name);
+            }
+            return;
+        }
+        // decided alike on every rank (the set's fields must agree), from the ranks that have any
+        const bool carried =
+            GlobalReduce::max(std::size_t(1), [&](std::size_t) { return values.empty() ? 0.0 : 1.0; }) > 0;
+        if (!carried) return;
+        std::vector<T>& field = owner_->template field<T>(name);
+        if (values.size() == field.size()) field = values;
+    };
+    carry("fpmStartDensity", rhoStart_);
+    carry("fpmStartPressure", pStart_);
+    carry("fpmStartVelocity", vStart_);
+    carry("fpmStartRadius", radius0_);
+    carry("fpmSoundSpeed", c_);
+}
+
 // Several ranks (issue 21). The halo is planned with width w = R + skin around each rank's part,
 // R the widest rows' reach (h, 2 h under growSupport, (1 + maxShift) h for the shifted fits; h is
 // constant) and the skin half an h: a pair within R of particles that moved d_i and d_j since is
@@ -1333,35 +1417,11 @@ void FpmSolver<Dim>::updateDecomposition() {
     }
     due = GlobalReduce::max(std::size_t(1), [&](std::size_t) { return due ? 1.0 : 0.0; }) > 0;
     if (!due) return;
-    const auto stash = [&](const char* name, auto& values) {
-        using T = typename std::remove_reference_t<decltype(values)>::value_type;
-        // decided alike on every rank (the set's fields must agree), from the ranks that have any
-        const bool carried =
-            GlobalReduce::max(std::size_t(1), [&](std::size_t) { return values.empty() ? 0.0 : 1.0; }) > 0;
-        if (!carried) return;
-        std::vector<T>& field = owner_->template field<T>(name);
-        if (values.size() == field.size()) field = values;
-    };
-    const auto unstash = [&](const char* name, auto& values) {
-        using T = typename std::remove_reference_t<decltype(values)>::value_type;
-        if (auto* f = owner_->template findField<T>(name)) {
-            values = *f;
-            owner_->removeField(name);
-        }
-    };
-    stash("fpmStartDensity", rhoStart_);
-    stash("fpmStartPressure", pStart_);
-    stash("fpmStartVelocity", vStart_);
-    stash("fpmStartRadius", radius0_);
-    stash("fpmSoundSpeed", c_);
     const bool first = haloWidth_ == 0;
     const int rebalancesBefore = decomposition_->rebalances();
+    carrySolverArrays(true);
     decomposition_->migrate(*owner_, {});
-    unstash("fpmStartDensity", rhoStart_);
-    unstash("fpmStartPressure", pStart_);
-    unstash("fpmStartVelocity", vStart_);
-    unstash("fpmStartRadius", radius0_);
-    unstash("fpmSoundSpeed", c_);
+    carrySolverArrays(false);
     if (shear_) assignShearModuli();
     haloWidth_ = reach + skin;
     decomposition_->planHalo(*owner_, haloWidth_);

@@ -111,6 +111,9 @@ private:
     double centralReach() const;
     double shiftedReach() const;
     void assignShearModuli();
+    void carrySolverArrays(bool toFields);
+    void gatherWholeSet();
+    void redistribute();
 
     std::unique_ptr<ParticleSet<Dim>> owner_;
     const Dictionary& properties_;
