@@ -1268,7 +1268,12 @@ void FpmSolver<Dim>::manageParticles() {
             const EquationOfState* eos = (*materials_)[std::size_t((*material)[i])].eos.get();
             return eos ? std::sqrt(std::max(eos->soundSpeedSquared(rho_[i], e_ ? (*e_)[i] : 0.0), 0.0)) : 0.0;
         });
-        if (decomposition_) redistribute();
+        // The conditions' selections index the particles: the merged ones are gone and the
+        // inserted ones are judged by the criteria (a particle inserted at a slip wall slides).
+        if (decomposition_)
+            redistribute();  // updates them on the new cut
+        else
+            boundaryConditions_.updateSelections(*owner_);
     }
 }
 
