@@ -45,7 +45,7 @@
 // owned ones, and the halo (the other ranks' particles within the widest rows' reach plus h/2,
 // with x, v, p, S) is appended at the step's start and refreshed after each stage; every fit's
 // rows are in global-id order, so the state is the serial one to the bit (updateDecomposition).
-// particleManagement is refused there.
+// particleManagement runs on the whole set gathered on every rank, then cut again (manageParticles).
 // system/controlDict: a fixed deltaT (adjustTimeStep no; the thesis's 0.001), or adjustTimeStep yes
 // with maxCo: dt = maxCo x spacing / max |v| (prescribed motion), maxCo x spacing / max (c_L + |v|)
 // with the Euler or shear part (c_L^2 = c^2 + (2 - 2/d) mu / rho, the note's [R] of §3.5).
