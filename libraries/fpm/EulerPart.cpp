@@ -45,13 +45,13 @@ void EulerPart<Dim>::upwind(const std::vector<Vector<Dim>>& x, const NeighbourLi
                             const std::vector<double>& p, const std::vector<Vector<Dim>>& v,
                             const std::vector<double>& c, const std::vector<Vector<Dim>>& gradP,
                             const std::vector<Tensor<Dim>>& gradV) {
-    const std::size_t n = x.size();
+    const std::size_t n = rows.size();  // the particles evaluated; x may hold a halo beyond
     EulerUpwind<Dim>& r = result_;
     r.divV.assign(n, 0.0);
     r.gradP.assign(n, Vector<Dim>::Zero());
     r.vCorrect.assign(n, Vector<Dim>::Zero());
     r.pCorrect.assign(n, 0.0);
-    r.vUpwind = v;
+    r.vUpwind.assign(v.begin(), v.begin() + std::ptrdiff_t(n));
     r.shift.assign(n, 0.0);
     r.flat = r.tooFew = 0;
 
@@ -147,7 +147,7 @@ void EulerPart<Dim>::advance(double dt, std::vector<double>& rho, std::vector<Ve
                              std::vector<double>& p, std::vector<double>* e,
                              const std::vector<double>& c) const {
     const EulerUpwind<Dim>& r = result_;
-    parallelFor(rho.size(), [&](std::size_t i) {
+    parallelFor(r.divV.size(), [&](std::size_t i) {  // the particles of the last upwind()
         const double rho0 = rho[i], p0 = p[i], div = r.divV[i];
         rho[i] = rho0 - dt * rho0 * div;
         v[i] -= (dt / rho0) * r.gradP[i];

@@ -75,6 +75,8 @@ public:
 
     // rows[i]: the neighbours of particle i within (1 + maxShift) h at least (the shifted points'
     // neighbours within h are among them); gradP, gradV: the central fit's gradients at the particles.
+    // The particles evaluated are the rows' (rows.size()); x, p and v may hold more particles,
+    // read as neighbours only (another rank's halo).
     void upwind(const std::vector<Vector<Dim>>& x, const NeighbourList& rows, double h,
                 const FitWeight& weight, const std::vector<double>& rho, const std::vector<double>& p,
                 const std::vector<Vector<Dim>>& v, const std::vector<double>& c,

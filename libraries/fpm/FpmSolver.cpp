@@ -40,6 +40,12 @@
 //
 // S is given as (xx yy zz xy yz xz); initialStress is applied at a fresh start to the particles
 // inside its shape (all of them without one).
+//
+// Several ranks (mpirun; issue 21): the particles are cut by position, each rank advances its
+// owned ones, and the halo (the other ranks' particles within the widest rows' reach plus h/2,
+// with x, v, p, S) is appended at the step's start and refreshed after each stage; every fit's
+// rows are in global-id order, so the state is the serial one to the bit (updateDecomposition).
+// particleManagement runs on the whole set gathered on every rank, then cut again (manageParticles).
 // system/controlDict: a fixed deltaT (adjustTimeStep no; the thesis's 0.001), or adjustTimeStep yes
 // with maxCo: dt = maxCo x spacing / max |v| (prescribed motion), maxCo x spacing / max (c_L + |v|)
 // with the Euler or shear part (c_L^2 = c^2 + (2 - 2/d) mu / rho, the note's [R] of §3.5).
@@ -78,7 +84,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <limits>
+#include <numeric>
 #include <sstream>
 #include <type_traits>
 
@@ -483,6 +491,18 @@ FpmSolver<Dim>::FpmSolver(SolverRun& run)
         Log::warning(
             "fpmSolid: boundary conditions with the rotation part alone act on v only, which it does not "
             "evolve");
+    decomposition_ = run.decomposition();
+    if (decomposition_) {
+        // What the fits read of a neighbour: its position, and the fields fitted (v by every part,
+        // p by the Euler part, S by the shear part); rho, e, c, mu and the material are read of the
+        // particle itself only. The halo's v, p and S are refreshed where a stage or a surface
+        // condition changed them (refreshHalo).
+        haloFields_ = {"position", "velocity", "pressure"};
+        if (S_) haloFields_.push_back("deviatoricStress");
+        // Planned now, so that what runs before the first step (the health indicators) sees each
+        // rank's neighbours across its cuts.
+        updateDecomposition();
+    }
 }
 
 // constant/materialProperties, when the case has one, through the shared MaterialSet: per material
@@ -520,7 +540,6 @@ void FpmSolver<Dim>::readMaterials() {
         // deviator's weight from the laws (one value for the run), plasticity where a law yields.
         const std::vector<std::int64_t>& material = owner_->integerField("material");
         bool anyStrength = false, weightSet = false;
-        mu_.assign(material.size(), 0.0);
         for (std::size_t k = 0; k < materials_->size(); ++k) {
             const auto* strength = (*materials_)[k].strength.get();
             if (!strength) continue;
@@ -539,13 +558,12 @@ void FpmSolver<Dim>::readMaterials() {
                                       " needs a temperature, which fpmSolid does not evolve; use "
                                       "hookean or vonMises");
         }
-        for (std::size_t i = 0; i < material.size(); ++i) {
-            const auto* strength = (*materials_)[std::size_t(material[i])].strength.get();
-            if (strength) {
-                mu_[i] = strength->shearModulus();
-                anyStrength = true;
-            }
-        }
+        assignShearModuli();
+        for (std::size_t i = 0; i < material.size(); ++i)
+            anyStrength = anyStrength || (*materials_)[std::size_t(material[i])].strength != nullptr;
+        // over every rank: one whose particles are all unstrained is no error
+        anyStrength =
+            GlobalReduce::max(std::size_t(1), [&](std::size_t) { return anyStrength ? 1.0 : 0.0; }) > 0;
         if (!anyStrength)
             throw dict->error(
                 "materials",
@@ -562,6 +580,18 @@ void FpmSolver<Dim>::readMaterials() {
                                    "dp/de|rho from their equationOfState (0 without one)"
                                  : "")
                    : std::string("the rotation part uses none of their models")));
+}
+
+// mu per owned particle from its material's strength law (0 without one: not sheared); again after
+// a migration, which brings other particles.
+template <int Dim>
+void FpmSolver<Dim>::assignShearModuli() {
+    const std::vector<std::int64_t>& material = owner_->integerField("material");
+    mu_.assign(owner_->ownedCount(), 0.0);
+    for (std::size_t i = 0; i < mu_.size(); ++i) {
+        const auto* strength = (*materials_)[std::size_t(material[i])].strength.get();
+        if (strength) mu_[i] = strength->shearModulus();
+    }
 }
 
 template <int Dim>
@@ -717,7 +747,8 @@ void FpmSolver<Dim>::initialiseFields() {
     // The deviator only where something evolves or reads it (leave out what a scene does not
     // need): the shear part, the rotation part (which turns a given stress), an initial stress; a
     // state that carries one keeps it.
-    if (shear_ || rotation_ || hasInitialStress_ || hadStress) S_ = &owner_->symmTensorField("deviatoricStress");
+    if (shear_ || rotation_ || hasInitialStress_ || hadStress)
+        S_ = &owner_->symmTensorField("deviatoricStress");
     if (!hadVolume)
         for (std::size_t i = 0; i < n; ++i) (*V_)[i] = m[i] / rho_[i];
     if (S_ && (fresh || !hadStress))
@@ -764,7 +795,8 @@ void FpmSolver<Dim>::initialiseFields() {
     if (settings_.given("reference")) readFlowReference();
 
     std::ostringstream log;
-    log << "fpmSolid: " << n << " particles, spacing " << spacing_ << ", h " << h_ << " (" << h_ / spacing_
+    log << "fpmSolid: " << GlobalReduce::sum<double>(std::size_t(1), [&](std::size_t) { return double(n); })
+        << " particles, spacing " << spacing_ << ", h " << h_ << " (" << h_ / spacing_
         << " spacings), fit order " << settings_.integer("order")
         << (settings_.given("shiftedFitOrder")
                 ? " (shifted fits " + std::to_string(settings_.integer("shiftedFitOrder")) + ")"
@@ -840,19 +872,24 @@ TimeStepVote FpmSolver<Dim>::stableTimeStep() {
 
 template <int Dim>
 void FpmSolver<Dim>::step(double dt) {
-    const std::size_t n = x_.size();
+    if (decomposition_) {
+        updateDecomposition();
+        auto timed = phase("neighbours");
+        decomposition_->appendHalo(*owner_, haloFields_);
+    }
+    // The particles this rank evaluates and advances; x_.size() - n are the halo's, read only.
+    const std::size_t n = owner_->ownedCount();
     {
         auto timed = phase("neighbours");
         // growSupport refits within the rows it is given: they must reach its largest support
-        rows_ = search_.build(x_, fit_.options().fallback == LeastSquaresOperators<Dim>::Fallback::growSupport
-                                      ? fit_.options().maxSupportGrowth * h_
-                                      : h_);
+        rows_ = rowsWithin(centralReach() * h_);
     }
     {
         auto timed = phase("fit");
         hField_.assign(n, h_);
+        points_.assign(x_.begin(), x_.begin() + std::ptrdiff_t(n));
         try {
-            fit_.rebuild(x_, x_, rows_, hField_, *fitWeight_);
+            fit_.rebuild(points_, x_, rows_, hField_, *fitWeight_);
         } catch (const InputError&) {
             throw;
         } catch (const RunError&) {
@@ -860,7 +897,7 @@ void FpmSolver<Dim>::step(double dt) {
         } catch (const Error& e) {
             // The fit's own diagnosis (point = particle index on this process, its position and
             // neighbour counts, the remedies), with the time and the solver's remedy. Rank-local:
-            // with several ranks the others would wait (no rank decomposition yet).
+            // with several ranks the run ends on this rank's error (the point is its index here).
             throw RunError(
                 "phase fit, step " + std::to_string(time().timeIndex() + 1) +
                 ", t = " + formatKeywordNumber(time().value() + dt) + ": " + e.what() +
@@ -869,16 +906,23 @@ void FpmSolver<Dim>::step(double dt) {
         }
         // the weights once per particle, applied to the Dim components of v
         gradV_ = fit_.gradientOf(v_);
-        neighboursPerParticle_ = n ? double(rows_.offsets()[n]) / double(n) : 0.0;
+        {
+            SumArray<2> local;
+            local.s = {double(rows_.offsets()[n]), double(n)};
+            const SumArray<2> pairs = globalSum(local);
+            neighboursPerParticle_ = pairs.s[1] > 0 ? pairs.s[0] / pairs.s[1] : 0.0;
+        }
         if (surface_) {  // on the rows within h (growSupport's rows reach further: detection takes h)
             markVelocityHeld(time().value() + dt);
-            surface_->detect(x_, rows_, h_);
+            surface_->detect(x_, rows_, h_, {},
+                             [&](void* data, std::size_t bytes) { owner_->refreshHalo(data, bytes); });
             if (edgeAngle_ > 0) {
                 edge_ = surface_->edges(rows_, edgeAngle_);
                 edgeParticles_ += std::size_t(std::count(edge_.begin(), edge_.end(), 1));
             }
             surfaceParticles_ += surface_->surfaceCount();
             applyFreeSurface(std::nullopt);  // the step starts from a state that satisfies the conditions
+            refreshHalo();                   // the conditions changed p and S (the fits' values)
         }
         grown_ += fit_.fallbackCounts().grown;
         shepard_ += fit_.fallbackCounts().shepard;
@@ -892,7 +936,10 @@ void FpmSolver<Dim>::step(double dt) {
     const std::vector<Tensor<Dim>> gradVStart = gradV_;
     bool first = true;
     for (const fpm::SplitStage& stage : splitting_->stages(parts_)) {
-        if (!first) gradV_ = fit_.gradientOf(v_);  // the stage's start: the previous stage's v
+        if (!first) {  // the stage's start: the previous stage's v (and p, S), the halo's too
+            refreshHalo();
+            gradV_ = fit_.gradientOf(v_);
+        }
         first = false;
         const double dts = stage.fraction * dt;
         switch (stage.part) {
@@ -995,6 +1042,10 @@ void FpmSolver<Dim>::step(double dt) {
         worstChange_.p = std::max(worstChange_.p, c.p);
         worstChange_.v = std::max(worstChange_.v, c.v);
     }
+    // The halo is remade at the next step (its x are this step's start's): between steps the set
+    // holds the owned particles only (what is written, what the time step and the function
+    // objects read).
+    if (decomposition_) owner_->clearGhosts();
     // last, on the moved and checked state: the next step's neighbours see the new particles
     if (management_ && (time().timeIndex() + 1) % managementInterval_ == 0) manageParticles();
 }
@@ -1005,7 +1056,7 @@ void FpmSolver<Dim>::step(double dt) {
 template <int Dim>
 void FpmSolver<Dim>::eulerStage(double dt, double fraction) {
     auto timed = phase("euler");
-    const std::size_t n = x_.size();
+    const std::size_t n = owner_->ownedCount();
     const std::vector<std::int64_t>& material = owner_->integerField("material");
     c_.resize(n);
     std::vector<double> c2(n), bracket(n);
@@ -1096,6 +1147,7 @@ void FpmSolver<Dim>::readFreeSurface() {
 // step's start, where a particle may have just joined the surface with a state built inside.
 template <int Dim>
 void FpmSolver<Dim>::applyFreeSurface(std::optional<fpm::Subsystem> stage) {
+    const std::size_t owned = owner_->ownedCount();  // the halo's particles are their owners'
     const auto& flag = surface_->surface();
     const auto& normal = surface_->normal();
     std::vector<double>& p = *p_;
@@ -1109,8 +1161,8 @@ void FpmSolver<Dim>::applyFreeSurface(std::optional<fpm::Subsystem> stage) {
     if (totalStressSurface_) {
         // c of the last Euler stage (none before the first: the normal impedance is the shear part's)
         const bool kick = characteristicSurface_ && stage.has_value();
-        const bool soundSpeed = c_.size() == x_.size();
-        parallelFor(x_.size(), [&](std::size_t i) {
+        const bool soundSpeed = c_.size() == owned;
+        parallelFor(owned, [&](std::size_t i) {
             if (!flag[i] || (!edge_.empty() && edge_[i])) return;
             if (normal[i].squaredNorm() > 0)
                 fpm::applySurfaceStress<Dim>(outerPressure_, normal[i], deviatorWeight_, mu_[i],
@@ -1122,7 +1174,7 @@ void FpmSolver<Dim>::applyFreeSurface(std::optional<fpm::Subsystem> stage) {
         if (edge_.empty()) return;
     }
     // the thesis's pair (everywhere, or at the edges under condition traction)
-    parallelFor(x_.size(), [&](std::size_t i) {
+    parallelFor(owned, [&](std::size_t i) {
         if (!flag[i] || (totalStressSurface_ && !edge_[i])) return;
         const bool oriented = normal[i].squaredNorm() > 0;
         fpm::applySurfacePressure<Dim>(outerPressure_, normal[i], eulerKick ? c_[i] : 0.0,
@@ -1183,9 +1235,18 @@ template <int Dim>
 void FpmSolver<Dim>::manageParticles() {
     if constexpr (Dim > 1) {
         auto timed = phase("particleManagement");
+        // Several ranks: the merging and the insertion are sweeps in global-id order whose every
+        // decision depends on the ones before (a particle merged, a hole filled), across the cuts:
+        // they run on the whole set, gathered on every rank in id order (the serial run's order),
+        // so that every rank makes the serial decisions and issues the serial ids; then the set is
+        // cut again. Exact but not scalable (every rank holds the whole set at a management step).
+        if (decomposition_) gatherWholeSet();
         const std::vector<std::int64_t> origin = management_->apply(*owner_, h_, *fitWeight_);
         const auto& last = management_->last();
-        if (last.inserted == 0 && last.merged == 0) return;
+        if (last.inserted == 0 && last.merged == 0) {
+            if (decomposition_) redistribute();
+            return;
+        }
         const std::size_t n = x_.size();
         const std::vector<std::int64_t>* material = owner_->template findField<std::int64_t>("material");
         const auto remap = [&](auto& values, auto fresh) {
@@ -1207,19 +1268,180 @@ void FpmSolver<Dim>::manageParticles() {
             const EquationOfState* eos = (*materials_)[std::size_t((*material)[i])].eos.get();
             return eos ? std::sqrt(std::max(eos->soundSpeedSquared(rho_[i], e_ ? (*e_)[i] : 0.0), 0.0)) : 0.0;
         });
+        // The conditions' selections index the particles: the merged ones are gone and the
+        // inserted ones are judged by the criteria (a particle inserted at a slip wall slides).
+        if (decomposition_)
+            redistribute();  // updates them on the new cut
+        else
+            boundaryConditions_.updateSelections(*owner_);
     }
+}
+
+// Several ranks: every rank's particles, every field and the solver's arrays, on every rank in
+// global-id order, and the next id the largest of the ranks' (above every id any rank issued or
+// held, as one process's). Each field travels as its 8-byte words (every element type is made of
+// doubles or 64-bit integers), concatenated in rank order.
+template <int Dim>
+void FpmSolver<Dim>::gatherWholeSet() {
+    carrySolverArrays(true);
+    const std::size_t n = owner_->ownedCount();
+    std::vector<std::string> names;
+    for (const auto& f : owner_->fields()) names.push_back(f->name());
+    std::sort(names.begin(), names.end());  // the same order on every rank
+    std::vector<std::vector<std::int64_t>> whole;
+    for (const std::string& name : names) {
+        const FieldBase& f = owner_->field(name);
+        if (f.elementBytes() % sizeof(std::int64_t) != 0)
+            throw Error("fpmSolid: field '" + name + "' is not made of 8-byte values; it cannot be gathered");
+        std::vector<std::int64_t> words(n * f.elementBytes() / sizeof(std::int64_t));
+        if (!words.empty()) std::memcpy(words.data(), f.data(), words.size() * sizeof(std::int64_t));
+        whole.push_back(globalConcatenation(words));
+    }
+    const std::int64_t next = std::int64_t(globalMax(double(owner_->nextGlobalId())));
+    const std::size_t total = std::size_t(globalSum(double(n)));
+    owner_->appendMigrated(total - n);
+    for (std::size_t k = 0; k < names.size(); ++k) {
+        FieldBase& f = owner_->field(names[k]);
+        if (!whole[k].empty()) std::memcpy(f.data(), whole[k].data(), whole[k].size() * sizeof(std::int64_t));
+    }
+    const std::vector<std::int64_t>& id = owner_->globalId();
+    std::vector<std::size_t> order(total);
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return id[a] < id[b]; });
+    owner_->reorder(order);
+    owner_->reserveGlobalIdsBelow(next);
+    carrySolverArrays(false);
+    if (shear_) assignShearModuli();  // the whole set's, for the remap of the new particles
+}
+
+// Several ranks, after a management step on the whole set: each rank keeps its share of a new cut,
+// and the halo is planned again at the next step's start.
+template <int Dim>
+void FpmSolver<Dim>::redistribute() {
+    carrySolverArrays(true);
+    decomposition_->distribute(*owner_, "fpmSolid's particle management");
+    carrySolverArrays(false);
+    if (shear_) assignShearModuli();
+    xAtMigration_.clear();  // a migration (none moves) and a new halo plan at the next step
+    boundaryConditions_.updateSelections(*owner_);
+}
+
+// The reach of rows_, in h: growSupport refits within them up to its largest support.
+template <int Dim>
+double FpmSolver<Dim>::centralReach() const {
+    return fit_.options().fallback == LeastSquaresOperators<Dim>::Fallback::growSupport
+               ? fit_.options().maxSupportGrowth
+               : 1.0;
+}
+
+// The reach of the shifted fits' rows, in h: the largest shift of the parts that run, plus h.
+template <int Dim>
+double FpmSolver<Dim>::shiftedReach() const {
+    double reach = 1.0;
+    if (eulerPart_) reach = std::max(reach, 1.0 + eulerPart_->options().maxShift);
+    if (shearPart_) reach = std::max(reach, 1.0 + shearPart_->options().maxShift);
+    return reach;
+}
+
+// The rows of the owned particles within `radius` (self included), in the order that gives the
+// fits' sums their serial bits: by index on one rank (the particle file's order, the global ids'),
+// by global id on several (whose numbering of owned and halo particles differs). The halo's own
+// rows are dropped: a halo particle is read, never fitted (its rows would be cut by the halo's edge).
+template <int Dim>
+NeighbourList FpmSolver<Dim>::rowsWithin(double radius) {
+    NeighbourList all = search_.build(x_, radius);
+    if (!decomposition_) return all;
+    const std::size_t n = owner_->ownedCount();
+    std::vector<std::size_t> offsets(all.offsets().begin(), all.offsets().begin() + std::ptrdiff_t(n + 1));
+    std::vector<NeighbourList::Index> indices(all.indices().begin(),
+                                              all.indices().begin() + std::ptrdiff_t(offsets[n]));
+    NeighbourList rows(std::move(offsets), std::move(indices));
+    rows.sortRowsBy(owner_->globalId().data());
+    return rows;
+}
+
+// Several ranks: the fields the fits read of a neighbour (haloFields_), refreshed in the halo
+// after a stage or a surface condition changed them on their owners. Nothing on one rank.
+template <int Dim>
+void FpmSolver<Dim>::refreshHalo() {
+    if (!decomposition_) return;
+    owner_->copyToGhosts(v_);
+    owner_->copyToGhosts(*p_);
+    if (S_) owner_->copyToGhosts(*S_);
+}
+
+// The solver's per-particle arrays that outlive a step, as temporary fields of the set (toFields)
+// or back (and the fields removed): what carries them through a migration or a gather. Collective.
+template <int Dim>
+void FpmSolver<Dim>::carrySolverArrays(bool toFields) {
+    const auto carry = [&](const char* name, auto& values) {
+        using T = typename std::remove_reference_t<decltype(values)>::value_type;
+        if (!toFields) {
+            if (auto* f = owner_->template findField<T>(name)) {
+                values = *f;
+                owner_->removeField(name);
+            }
+            return;
+        }
+        // decided alike on every rank (the set's fields must agree), from the ranks that have any
+        const bool carried =
+            GlobalReduce::max(std::size_t(1), [&](std::size_t) { return values.empty() ? 0.0 : 1.0; }) > 0;
+        if (!carried) return;
+        std::vector<T>& field = owner_->template field<T>(name);
+        if (values.size() == field.size()) field = values;
+    };
+    carry("fpmStartDensity", rhoStart_);
+    carry("fpmStartPressure", pStart_);
+    carry("fpmStartVelocity", vStart_);
+    carry("fpmStartRadius", radius0_);
+    carry("fpmSoundSpeed", c_);
+}
+
+// Several ranks (issue 21). The halo is planned with width w = R + skin around each rank's part,
+// R the widest rows' reach (h, 2 h under growSupport, (1 + maxShift) h for the shifted fits; h is
+// constant) and the skin half an h: a pair within R of particles that moved d_i and d_j since is
+// covered while R + d_i + d_j <= w, so the particles migrate to their owners (and the halo is
+// planned again) when 2 max d + R > w, tested at the start of a step (the particles move at its
+// end, after every fit). After a migration the owned particles are in global-id order and the
+// halo in rank order (Decomposition.hpp); rowsWithin orders each row by global id, so every fit
+// sums its row in the serial order and the state has the serial bits on any number of ranks.
+// The solver's own per-particle arrays that outlive a step (the state-change measure's start
+// values, the rotation reference's radii, c of the last Euler stage) travel with their particles
+// as temporary fields; mu is assigned again from the materials.
+template <int Dim>
+void FpmSolver<Dim>::updateDecomposition() {
+    auto timed = phase("neighbours");
+    const std::size_t n = owner_->ownedCount();
+    const double reach = std::max(centralReach(), shiftedReach()) * h_;
+    const double skin = 0.5 * h_;
+    bool due = xAtMigration_.size() != n || haloWidth_ == 0;
+    if (!due) {
+        const double dMax =
+            GlobalReduce::max(n, [&](std::size_t i) { return (x_[i] - xAtMigration_[i]).norm(); });
+        due = 2 * dMax + reach > haloWidth_;
+    }
+    due = GlobalReduce::max(std::size_t(1), [&](std::size_t) { return due ? 1.0 : 0.0; }) > 0;
+    if (!due) return;
+    const bool first = haloWidth_ == 0;
+    const int rebalancesBefore = decomposition_->rebalances();
+    carrySolverArrays(true);
+    decomposition_->migrate(*owner_, {});
+    carrySolverArrays(false);
+    if (shear_) assignShearModuli();
+    haloWidth_ = reach + skin;
+    decomposition_->planHalo(*owner_, haloWidth_);
+    boundaryConditions_.updateSelections(*owner_);
+    xAtMigration_.assign(x_.begin(), x_.begin() + std::ptrdiff_t(owner_->ownedCount()));
+    if (first || decomposition_->rebalances() != rebalancesBefore)
+        Log::info(decomposition_->report(*owner_, {}));
 }
 
 template <int Dim>
 const NeighbourList& FpmSolver<Dim>::shiftedRows() {
-    const double central = fit_.options().fallback == LeastSquaresOperators<Dim>::Fallback::growSupport
-                               ? fit_.options().maxSupportGrowth
-                               : 1.0;  // the reach of rows_, in h
-    double reach = 1.0;                // the largest shift of the parts that run, plus h
-    if (eulerPart_) reach = std::max(reach, 1.0 + eulerPart_->options().maxShift);
-    if (shearPart_) reach = std::max(reach, 1.0 + shearPart_->options().maxShift);
+    const double central = centralReach();  // the reach of rows_, in h
+    const double reach = shiftedReach();
     if (reach <= central) return rows_;
-    if (!wideBuilt_) wideRows_ = search_.build(x_, reach * h_);
+    if (!wideBuilt_) wideRows_ = rowsWithin(reach * h_);
     wideBuilt_ = true;
     return wideRows_;
 }
@@ -1231,7 +1453,7 @@ const NeighbourList& FpmSolver<Dim>::shiftedRows() {
 template <int Dim>
 void FpmSolver<Dim>::shearStage(double dt, double fraction) {
     auto timed = phase("shear");
-    const std::size_t n = x_.size();
+    const std::size_t n = owner_->ownedCount();
     const std::vector<std::int64_t>& material = owner_->integerField("material");
     g_.assign(n, 0.0);
     for (std::size_t i = 0; i < n; ++i) {
@@ -1286,7 +1508,7 @@ template <int Dim>
 void FpmSolver<Dim>::rotationStage(double dt) {
     auto timed = phase("rotation");
     std::vector<SymmTensor<Dim>>& S = *S_;
-    parallelFor(S.size(),
+    parallelFor(gradV_.size(),  // the owned particles
                 [&](std::size_t i) { S[i] = fpm::rotated(S[i], fpm::spinExponential<Dim>(gradV_[i], dt)); });
 }
 
@@ -1361,7 +1583,7 @@ void FpmSolver<Dim>::measureFlowError(double t) {
     flowState_ = flowReference_->advanced(flowState_, flowTime_, t);
     flowTime_ = t;
     const fpm::UniformState<Dim>& ex = flowState_;
-    const std::size_t n = x_.size();
+    const std::size_t n = owner_->ownedCount();
     FlowError a;
     a.rho = GlobalReduce::max(n, [&](std::size_t i) { return std::abs(rho_[i] - ex.rho); });
     a.p = GlobalReduce::max(n, [&](std::size_t i) { return std::abs((*p_)[i] - ex.p); });
@@ -1390,7 +1612,7 @@ void FpmSolver<Dim>::measureFlowError(double t) {
 // every rank reports the same figures.
 template <int Dim>
 void FpmSolver<Dim>::measureRotationError(double t) {
-    const std::size_t n = x_.size();
+    const std::size_t n = owner_->ownedCount();
     const Tensor<3> Q3 = fpm::axisRotation(axis_, omega_, t);
     const Tensor<Dim> Q = Q3.template topLeftCorner<Dim, Dim>();
     const std::vector<SymmTensor<Dim>>& S = *S_;
@@ -1462,7 +1684,11 @@ std::vector<HealthIndicator> FpmSolver<Dim>::healthIndicators() const {
     const int m = fit_.basisSize();
     const int minimum = std::max(m, options.minNeighbours);
     NeighbourSearch<Dim> search(NeighbourDomain<Dim>{}, searchOptions());
+    // Several ranks: the particles near a cut count their neighbours on the other side too (the
+    // halo's positions, appended for the count and removed again; the set is the owner's).
+    if (decomposition_) decomposition_->appendHalo(*owner_, {"position"});
     const NeighbourList rows = search.build(x_, h_);
+    if (decomposition_) owner_->clearGhosts();
     std::vector<double> count(n, 0.0), reciprocal(n, 0.0);
     parallelFor(n, [&](std::size_t a) {
         Eigen::MatrixXd M = Eigen::MatrixXd::Zero(m, m);
@@ -1573,6 +1799,20 @@ template <int Dim>
 std::vector<std::string> FpmSolver<Dim>::summary(double) const {
     std::vector<std::string> lines;
     char line[256];
+    // The counters are per rank: summed (the largest shifts: the largest) over the ranks, so that
+    // the summary is the run's, as one process would give it.
+    SumArray<12> local;
+    local.s = {double(grown_),         double(shepard_),        double(flat_),
+               double(tooFew_),        double(eulerShortened_), double(shearTooFew_),
+               double(unstrained_),    double(shortened_),      double(surfaceParticles_),
+               double(edgeParticles_), double(x_.size()),       0.0};
+    const SumArray<12> total = globalSum(local);
+    const auto count = [&](int k) { return std::size_t(total.s[std::size_t(k)]); };
+    const std::size_t grown_ = count(0), shepard_ = count(1), flat_ = count(2), tooFew_ = count(3),
+                      eulerShortened_ = count(4), shearTooFew_ = count(5), unstrained_ = count(6),
+                      shortened_ = count(7), surfaceParticles_ = count(8), edgeParticles_ = count(9),
+                      particles = count(10);
+    const double maxShift_ = globalMax(this->maxShift_), maxShearShift_ = globalMax(this->maxShearShift_);
     std::snprintf(
         line, sizeof line,
         "fit                  %.1f neighbours per particle (rows), fallbacks: %zu grown supports, %zu "
@@ -1625,7 +1865,7 @@ std::vector<std::string> FpmSolver<Dim>::summary(double) const {
             "particle management  %zu inserted, %zu pairs merged (over the run; %zu particles now); "
             "hole candidates rejected: %zu beyond a surface, %zu unfitted; mass change %.3e, "
             "momentum change %.3e",
-            t.inserted, t.merged, x_.size(), t.surface, t.unfitted, t.mass, t.momentum.norm());
+            t.inserted, t.merged, particles, t.surface, t.unfitted, t.mass, t.momentum.norm());
         lines.push_back(line);
     }
     if (flowReference_) {
@@ -1636,6 +1876,22 @@ std::vector<std::string> FpmSolver<Dim>::summary(double) const {
                       "the end (relative) rho %.3e, p %.3e, S %.3e",
                       runRelative.rho, runRelative.p, runRelative.S, flowRelative_.rho, flowRelative_.p,
                       flowRelative_.S);
+        lines.push_back(line);
+    }
+    if (decomposition_) {
+        // How often the halo was planned again, its size, and its traffic per step (bench/mpi).
+        const double ranks = globalSum(1.0);
+        const double owned = globalSum(double(owner_->ownedCount()));
+        const double halo = globalSum(double(decomposition_->haloSize()));
+        const double bytes = globalSum(double(decomposition_->bytesSent()));
+        const double steps = std::max(1.0, double(time().timeIndex()));
+        std::snprintf(
+            line, sizeof line,
+            "decomposition        %.0f ranks (%s), %d migrations, %d partitions; halo %.0f particles "
+            "(%.3g of the owned), width %.4g; %.4g bytes per particle per step",
+            ranks, decomposition_->partitioner().method().c_str(), decomposition_->migrations(),
+            decomposition_->rebalances(), halo, owned > 0 ? halo / owned : 0.0, haloWidth_,
+            owned > 0 ? bytes / owned / steps : 0.0);
         lines.push_back(line);
     }
     if (reference_) {

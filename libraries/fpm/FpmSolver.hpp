@@ -13,12 +13,14 @@
 #include "meshfreeOperators/LeastSquaresOperators.hpp"
 #include "meshfreeOperators/SurfaceDetection.hpp"
 #include "meshfreeOperators/fitWeights/FitWeight.hpp"
+#include "particles/Decomposition.hpp"
 #include "particles/NeighbourSearch.hpp"
 #include "solver/Solver.hpp"
 
 #include <array>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace mfdyn {
@@ -38,6 +40,9 @@ public:
     static KeywordSchema instabilityKeywords();
     static KeywordSchema managementKeywords();
     static constexpr const char* propertiesDictionary = "fpmProperties";
+    // Domain decomposition (issue 21): the halo and the rules that keep the serial bits are at
+    // FpmSolver::updateDecomposition (FpmSolver.cpp).
+    static constexpr bool runsOnSeveralRanks = true;
 
     TimeStepVote stableTimeStep() override;
     void step(double dt) override;
@@ -97,6 +102,18 @@ private:
     // the solver's per-particle arrays carried over to the new particles.
     void readManagement();
     void manageParticles();
+    // Several ranks: migration when the particles may have outrun the halo (at a step's start),
+    // the halo's refresh where a stage changed what the next fit reads, the rows of the owned
+    // particles (in global-id order) within a radius, and the reach of the rows in h.
+    void updateDecomposition();
+    void refreshHalo();
+    NeighbourList rowsWithin(double radius);
+    double centralReach() const;
+    double shiftedReach() const;
+    void assignShearModuli();
+    void carrySolverArrays(bool toFields);
+    void gatherWholeSet();
+    void redistribute();
 
     std::unique_ptr<ParticleSet<Dim>> owner_;
     const Dictionary& properties_;
@@ -182,6 +199,12 @@ private:
     std::vector<Vector<Dim>> motionVelocity_;  // x <- x + dt motionVelocity_ (upwind, dimensional)
     std::vector<double> divergence_;           // the step's div v for V (the Euler part's div v_uw)
     bool wideBuilt_ = false;
+
+    Decomposition* decomposition_ = nullptr;  // null on one rank
+    std::vector<std::string> haloFields_;
+    double haloWidth_ = 0;
+    std::vector<Vector<Dim>> xAtMigration_;
+    std::vector<Vector<Dim>> points_;  // the fits' points: the owned particles' positions
 
     std::vector<Vector<Dim>>& x_;
     std::vector<Vector<Dim>>& v_;

@@ -27,13 +27,13 @@ ShearPart<Dim>::ShearPart(typename LeastSquaresOperators<Dim>::Options fit, Shea
 template <int Dim>
 std::vector<Vector<Dim>> ShearPart<Dim>::divergence(const LeastSquaresOperators<Dim>& fit,
                                                     const std::vector<SymmTensor<Dim>>& S) {
-    std::vector<Vector<Dim>> div(S.size(), Vector<Dim>::Zero());
+    std::vector<Vector<Dim>> div(fit.size(), Vector<Dim>::Zero());  // at the fit's points
     for (int k = 0; k < SymmTensor<Dim>::size; ++k) {
         const std::vector<Vector<Dim>> g = fit.gradientOf(component(S, k));
         for (int i = 0; i < Dim; ++i)
             for (int j = 0; j < Dim; ++j)
                 if (SymmTensor<Dim>::index(i, j) == k)
-                    for (std::size_t a = 0; a < S.size(); ++a) div[a](i) += g[a](j);
+                    for (std::size_t a = 0; a < div.size(); ++a) div[a](i) += g[a](j);
     }
     return div;
 }
@@ -44,11 +44,11 @@ void ShearPart<Dim>::upwind(const std::vector<Vector<Dim>>& x, const NeighbourLi
                             const std::vector<Vector<Dim>>& v, const std::vector<SymmTensor<Dim>>& S,
                             const std::vector<double>& mu, const std::vector<Tensor<Dim>>& gradV,
                             const std::vector<Vector<Dim>>& divS) {
-    const std::size_t n = x.size();
+    const std::size_t n = rows.size();  // the particles evaluated; x may hold a halo beyond
     ShearUpwind<Dim>& r = result_;
     r.gradV = gradV;  // central where a particle is not shifted
     r.divS = divS;
-    r.vD = v;
+    r.vD.assign(v.begin(), v.begin() + std::ptrdiff_t(n));
     r.vCorrect.assign(n, Vector<Dim>::Zero());
     r.shift.assign(n, 0.0);
     r.tooFew = r.unstrained = r.shortened = 0;
@@ -166,7 +166,7 @@ void ShearPart<Dim>::advance(double dt, const std::vector<double>& rho, std::vec
                              double alpha) const {
     const ShearUpwind<Dim>& r = result_;
     const bool literal = shear_.literalSoundSpeed;
-    parallelFor(rho.size(), [&](std::size_t i) {
+    parallelFor(r.gradV.size(), [&](std::size_t i) {  // the particles of the last upwind()
         const double rho0 = rho[i], p0 = p[i];
         const SymmTensor<Dim> S0 = S[i];
         const Tensor<Dim>& G = r.gradV[i];

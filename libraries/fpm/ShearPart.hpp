@@ -79,7 +79,9 @@ public:
     ShearPart(typename LeastSquaresOperators<Dim>::Options fit, ShearOptions shear);
 
     // rows[i]: the neighbours of particle i within (1 + maxShift) h at least; gradV, divS: the
-    // central fit's grad v and div S at the particles; mu: each particle's shear modulus.
+    // central fit's grad v and div S at the particles; mu: each particle's shear modulus. The
+    // particles evaluated are the rows' (rows.size()); x, v and S may hold more particles, read as
+    // neighbours only (another rank's halo).
     void upwind(const std::vector<Vector<Dim>>& x, const NeighbourList& rows, double h,
                 const FitWeight& weight, const std::vector<double>& rho, const std::vector<Vector<Dim>>& v,
                 const std::vector<SymmTensor<Dim>>& S, const std::vector<double>& mu,

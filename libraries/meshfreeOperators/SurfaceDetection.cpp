@@ -93,24 +93,27 @@ typename SurfaceDetection<Dim>::Normals SurfaceDetection<Dim>::normalsNamed(cons
 
 template <int Dim>
 void SurfaceDetection<Dim>::detect(const std::vector<Vector<Dim>>& x, const NeighbourList& rows, double h,
-                                   const std::vector<double>& volume) {
-    detect(x, rows, std::vector<double>(x.size(), h), volume);
+                                   const std::vector<double>& volume, const HaloRefresh& halo) {
+    detect(x, rows, std::vector<double>(x.size(), h), volume, halo);
 }
 
 template <int Dim>
 void SurfaceDetection<Dim>::detect(const std::vector<Vector<Dim>>& x, const NeighbourList& rows,
-                                   const std::vector<double>& h, const std::vector<double>& volume) {
-    const std::size_t n = x.size();
-    if (rows.size() != n || h.size() != n || !(volume.empty() || volume.size() == n))
-        throw Error("SurfaceDetection::detect: " + std::to_string(n) + " positions, " +
+                                   const std::vector<double>& h, const std::vector<double>& volume,
+                                   const HaloRefresh& halo) {
+    const std::size_t n = rows.size();  // the particles judged; x.size() - n of the halo
+    if (x.size() < n || h.size() < n || !(volume.empty() || volume.size() == x.size()) ||
+        (x.size() > n && !halo))
+        throw Error("SurfaceDetection::detect: " + std::to_string(x.size()) + " positions, " +
                     std::to_string(rows.size()) + " rows, " + std::to_string(h.size()) + " support radii, " +
-                    std::to_string(volume.size()) + " volumes (one each, or no volumes)");
+                    std::to_string(volume.size()) +
+                    " volumes (one each, or no volumes; more positions than rows only with a halo)");
     for (std::size_t i = 0; i < n; ++i)
         if (!(h[i] > 0.0))
             throw Error("SurfaceDetection::detect: support radius " + std::to_string(h[i]) + " of particle " +
                         std::to_string(i) + " is not positive");
-    surface_.resize(n);
-    normal_.resize(n);
+    surface_.resize(x.size());
+    normal_.resize(x.size());
     offsetRatio_.resize(n);
     const auto& offsets = rows.offsets();
     const auto& indices = rows.indices();
@@ -179,6 +182,11 @@ void SurfaceDetection<Dim>::detect(const std::vector<Vector<Dim>>& x, const Neig
         surface_[i] = 1;
         normal_[i] = nrm;
     });
+    // Pass 2 and edges() read the flags and normals of the neighbours, the halo's included.
+    if (x.size() > n) {
+        halo(surface_.data(), sizeof(surface_[0]));
+        halo(normal_.data(), sizeof(normal_[0]));
+    }
 
     // Pass 2 (smoothedCovariance): the weighted mean of the covariance normals of the surface
     // particles of each surface particle's row, self included.
@@ -226,12 +234,15 @@ void SurfaceDetection<Dim>::detect(const std::vector<Vector<Dim>>& x, const Neig
             if (p.squaredNorm() > 0.0) normal_[i] = p;
         });
     }
+    const bool secondPass =
+        options_.normals == Normals::smoothedCovariance || options_.normals == Normals::planeFit;
+    if (x.size() > n && secondPass) halo(normal_.data(), sizeof(normal_[0]));
     surfaceCount_ = LocalReduce::sum<std::size_t>(n, [&](std::size_t i) { return std::size_t(surface_[i]); });
 }
 
 template <int Dim>
 std::vector<unsigned char> SurfaceDetection<Dim>::edges(const NeighbourList& rows, double angle) const {
-    const std::size_t n = surface_.size();
+    const std::size_t n = rows.size();
     std::vector<unsigned char> edge(n, 0);
     const double cosAngle = std::cos(angle);
     parallelFor(n, [&](std::size_t i) {

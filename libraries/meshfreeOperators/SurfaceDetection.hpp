@@ -71,6 +71,7 @@
 #include "particles/NeighbourList.hpp"
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -97,26 +98,33 @@ public:
 
     explicit SurfaceDetection(Options options = {});
 
+    // Several ranks (issue 21): fills the halo part of a per-particle array of x.size() elements
+    // (elementBytes each) from the other ranks (ParticleSetBase::refreshHalo).
+    using HaloRefresh = std::function<void(void* data, std::size_t elementBytes)>;
+
     // x: positions; rows[i]: the neighbours of i within h[i] (self optional; wider rows are fine,
     // weights vanish beyond h[i]); h: support radius per particle; volume: per particle, or empty
-    // for 1.
+    // for 1. The particles judged are the rows' (rows.size()); x may hold more, read as
+    // neighbours only: another rank's halo, whose flags and normals pass 2 and edges() read, so
+    // `halo` refreshes them (after pass 1, and the normals again after pass 2). The output
+    // arrays have x.size() elements.
     void detect(const std::vector<Vector<Dim>>& x, const NeighbourList& rows, const std::vector<double>& h,
-                const std::vector<double>& volume = {});
+                const std::vector<double>& volume = {}, const HaloRefresh& halo = {});
     void detect(const std::vector<Vector<Dim>>& x, const NeighbourList& rows, double h,
-                const std::vector<double>& volume = {});
+                const std::vector<double>& volume = {}, const HaloRefresh& halo = {});
 
     const Options& options() const { return options_; }
     std::size_t size() const { return surface_.size(); }
     // 1 for a surface particle, 0 otherwise.
     const std::vector<unsigned char>& surface() const { return surface_; }
-    std::size_t surfaceCount() const { return surfaceCount_; }
+    std::size_t surfaceCount() const { return surfaceCount_; }  // of the rows' particles
     // Outward unit normals of the surface particles (zero elsewhere, and for an isolated particle).
     const std::vector<Vector<Dim>>& normal() const { return normal_; }
     // Test 1's c_i, every particle.
     const std::vector<double>& offsetRatio() const { return offsetRatio_; }
     // After detect: 1 for a surface particle near an edge or a corner, where one normal cannot
     // describe the surface: a surface particle of its row (the rows given to detect) has a normal
-    // more than `angle` (radians) from its own. A flat face 2 h from an edge has none; a sphere of
+    // more than `angle` (radians) from its own; one per row. A flat face 2 h from an edge has none; a sphere of
     // radius R, normals up to about h / R apart (plus the normals' own error), so the angle is
     // the case's (at a plate's 90 degree corner the normals turn by 45 degrees over a spacing).
     std::vector<unsigned char> edges(const NeighbourList& rows, double angle) const;
