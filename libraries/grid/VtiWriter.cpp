@@ -4,6 +4,7 @@
 #include "particles/VtpWriter.hpp"
 #include "particles/XmlElement.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cctype>
 #include <charconv>
@@ -31,55 +32,78 @@ void appendBytes(std::string& out, const void* data, std::size_t bytes) {
 
 // A field's values as the file holds them: `source` maps each file component to the memory
 // component it comes from, or -1 for a zero pad (vtkComponentSource, shared with particles.vtp).
-void appendField(std::string& out, const FieldBase& f, std::size_t n) {
+// Nodes first .. first + n - 1 of the field.
+void appendField(std::string& out, const FieldBase& f, std::size_t first, std::size_t n) {
     const std::vector<int> source = vtkComponentSource(f.kind(), f.dimension());
     const std::uint64_t bytes = std::uint64_t(n) * source.size() * 8;
     appendBytes(out, &bytes, sizeof bytes);
     const int components = f.isInteger() ? 1 : f.components();
     bool identity = int(source.size()) == components;
     for (std::size_t k = 0; identity && k < source.size(); ++k) identity = source[k] == int(k);
-    // Scalars, integers and 3D vectors and tensors are in the file's layout already: one copy.
-    if (identity) return appendBytes(out, f.data(), bytes);
+    // Scalars, integers and 3D vectors and tensors are in the file's layout already: one copy
+    // (every value is 8 bytes, an integer field's too).
+    const char* base = static_cast<const char*>(f.data()) + first * std::size_t(components) * 8;
+    if (identity) return appendBytes(out, base, bytes);
     out.reserve(out.size() + bytes);
     for (std::size_t i = 0; i < n; ++i)
         for (int s : source) {
             // Doubles only: an integer field is one component, always the identity above.
-            const double value = s < 0 ? 0.0 : static_cast<const double*>(f.data())[i * components + s];
+            const double value = s < 0 ? 0.0 : reinterpret_cast<const double*>(base)[i * components + s];
             appendBytes(out, &value, 8);
         }
 }
 
-}  // namespace
-
-template <int Dim>
-std::string vtiText(const CartesianGrid<Dim>& grid, double time, const std::vector<std::string>& fields) {
-    const FieldStore& nodes = grid.nodes();
+// The node fields named (all of them, in creation order, when `fields` is empty).
+std::vector<const FieldBase*> chosenFields(const FieldStore& nodes, const std::vector<std::string>& fields) {
     std::vector<const FieldBase*> chosen;
     if (fields.empty()) {
         for (const auto& f : nodes.fields()) chosen.push_back(f.get());
-    } else {
-        for (const auto& name : fields) {
-            const FieldBase* f = nodes.findField(name);
-            if (!f) {
-                std::string list;
-                for (const auto& k : nodes.fieldNames()) list += (list.empty() ? "" : ", ") + k;
-                throw Error("grid output: no node field '" + name + "'; the grid has " +
-                            (list.empty() ? std::string("none") : list));
-            }
-            chosen.push_back(f);
-        }
+        return chosen;
     }
+    for (const auto& name : fields) {
+        const FieldBase* f = nodes.findField(name);
+        if (!f) {
+            std::string list;
+            for (const auto& k : nodes.fieldNames()) list += (list.empty() ? "" : ", ") + k;
+            throw Error("grid output: no node field '" + name + "'; the grid has " +
+                        (list.empty() ? std::string("none") : list));
+        }
+        chosen.push_back(f);
+    }
+    return chosen;
+}
 
-    const std::size_t n = grid.nodeCount();
-    // Extent, origin and spacing padded to 3D: the missing axes one node thick, with the first
-    // axis's spacing (ParaView refuses a zero spacing).
+// Extent, origin and spacing padded to 3D: the missing axes one node thick, with the first
+// axis's spacing (ParaView refuses a zero spacing). The extent's last real axis runs over the
+// node layers [firstLayer, lastLayer].
+template <int Dim>
+std::array<std::string, 3> imageGeometry(const CartesianGrid<Dim>& grid, std::int64_t firstLayer,
+                                         std::int64_t lastLayer) {
     std::string extent, origin, spacing;
     for (int d = 0; d < 3; ++d) {
         const bool real = d < Dim;
-        extent += std::string(d ? " " : "") + "0 " + std::to_string(real ? grid.cells()[d] : 0);
-        origin += (d ? " " : "") + number17(real ? grid.origin()[d] : 0.0);
-        spacing += (d ? " " : "") + number17(real ? grid.cellSize(d) : grid.cellSize(0));
+        const std::int64_t lo = d == Dim - 1 ? firstLayer : 0;
+        const std::int64_t hi = d == Dim - 1 ? lastLayer : real ? grid.cells()[d] : 0;
+        const char* gap = d ? " " : "";
+        extent.append(gap).append(std::to_string(lo)).append(" ").append(std::to_string(hi));
+        origin.append(gap).append(number17(real ? grid.origin()[d] : 0.0));
+        spacing.append(gap).append(number17(real ? grid.cellSize(d) : grid.cellSize(0)));
     }
+    return {extent, origin, spacing};
+}
+
+// The .vti of the node layers [firstLayer, lastLayer] along the grid's last axis (all of them:
+// the whole image). Nodes are numbered with the first axis fastest, so a run of layers is one
+// contiguous run of nodes, and its arrays are that run of the whole image's arrays.
+template <int Dim>
+std::string imageText(const CartesianGrid<Dim>& grid, double time, const std::vector<std::string>& fields,
+                      std::int64_t firstLayer, std::int64_t lastLayer) {
+    const std::vector<const FieldBase*> chosen = chosenFields(grid.nodes(), fields);
+    std::size_t layerNodes = 1;
+    for (int d = 0; d + 1 < Dim; ++d) layerNodes *= std::size_t(grid.cells()[d] + 1);
+    const std::size_t first = std::size_t(firstLayer) * layerNodes;
+    const std::size_t n = std::size_t(lastLayer - firstLayer + 1) * layerNodes;
+    const auto [extent, origin, spacing] = imageGeometry(grid, firstLayer, lastLayer);
 
     std::ostringstream xml;
     std::uint64_t offset = 0;
@@ -113,9 +137,56 @@ std::string vtiText(const CartesianGrid<Dim>& grid, double time, const std::vect
     appendBytes(out, &dim, 4);
     appendBytes(out, &eight, 8);
     appendBytes(out, &time, 8);
-    for (const FieldBase* f : chosen) appendField(out, *f, n);
+    for (const FieldBase* f : chosen) appendField(out, *f, first, n);
     out += "\n  </AppendedData>\n</VTKFile>\n";
     return out;
+}
+
+}  // namespace
+
+std::pair<std::int64_t, std::int64_t> gridSlab(std::int64_t cells, int piece, int pieces) {
+    return {cells * piece / pieces, cells * (piece + 1) / pieces};
+}
+
+template <int Dim>
+int gridPieceCount(const CartesianGrid<Dim>& grid, int ranks) {
+    return int(std::min<std::int64_t>(ranks, grid.cells()[Dim - 1]));
+}
+
+template <int Dim>
+std::string vtiText(const CartesianGrid<Dim>& grid, double time, const std::vector<std::string>& fields) {
+    return imageText(grid, time, fields, 0, grid.cells()[Dim - 1]);
+}
+
+template <int Dim>
+std::string vtiPieceText(const CartesianGrid<Dim>& grid, double time, const std::vector<std::string>& fields,
+                         int piece, int pieces) {
+    const auto [first, last] = gridSlab(grid.cells()[Dim - 1], piece, pieces);
+    return imageText(grid, time, fields, first, last);
+}
+
+template <int Dim>
+std::string pvtiText(const CartesianGrid<Dim>& grid, const std::vector<std::string>& fields, int pieces,
+                     const std::function<std::string(int)>& pieceName) {
+    const std::vector<const FieldBase*> chosen = chosenFields(grid.nodes(), fields);
+    const auto [whole, origin, spacing] = imageGeometry(grid, 0, grid.cells()[Dim - 1]);
+    std::ostringstream xml;
+    xml << "<?xml version=\"1.0\"?>\n"
+        << "<VTKFile type=\"PImageData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+           "header_type=\"UInt64\">\n"
+        << "  <PImageData WholeExtent=\"" << whole << "\" GhostLevel=\"0\" Origin=\"" << origin
+        << "\" Spacing=\"" << spacing << "\">\n    <PPointData>\n";
+    for (const FieldBase* f : chosen)
+        xml << "      <PDataArray type=\"" << (f->isInteger() ? "Int64" : "Float64") << "\" Name=\""
+            << xmlEscape(f->name()) << "\" NumberOfComponents=\"" << vtkComponents(f->kind()) << "\"/>\n";
+    xml << "    </PPointData>\n";
+    for (int r = 0; r < pieces; ++r) {
+        const auto [first, last] = gridSlab(grid.cells()[Dim - 1], r, pieces);
+        xml << "    <Piece Extent=\"" << imageGeometry(grid, first, last)[0] << "\" Source=\""
+            << xmlEscape(pieceName(r)) << "\"/>\n";
+    }
+    xml << "  </PImageData>\n</VTKFile>\n";
+    return xml.str();
 }
 
 template <int Dim>
@@ -188,9 +259,11 @@ VtiImage parseVti(std::string_view text, const std::string& fileName) {
     out.spacing = numbers<double, 3>(attribute(*image, "Spacing", fileName), "Spacing", fileName);
     std::uint64_t points = 1;
     for (int d = 0; d < 3; ++d) {
-        if (extent[2 * d] != 0 || extent[2 * d + 1] < 0) bad(fileName, "WholeExtent must be 0 n0 0 n1 0 n2");
+        if (extent[2 * d] < 0 || extent[2 * d + 1] < extent[2 * d])
+            bad(fileName, "WholeExtent must be a0 b0 a1 b1 a2 b2 with 0 <= a <= b");
+        out.first[d] = extent[2 * d];
         out.cells[d] = extent[2 * d + 1];
-        points *= std::uint64_t(out.cells[d] + 1);
+        points *= std::uint64_t(out.cells[d] - out.first[d] + 1);
     }
 
     // The bytes of the array at `offset` in the appended data, checked against its stated size.
@@ -259,6 +332,16 @@ VtiImage parseVti(std::string_view text, const std::string& fileName) {
 template std::string vtiText<1>(const CartesianGrid<1>&, double, const std::vector<std::string>&);
 template std::string vtiText<2>(const CartesianGrid<2>&, double, const std::vector<std::string>&);
 template std::string vtiText<3>(const CartesianGrid<3>&, double, const std::vector<std::string>&);
+#define MFDYN_GRID_PIECES(D)                                                                               \
+    template int gridPieceCount<D>(const CartesianGrid<D>&, int);                                          \
+    template std::string vtiPieceText<D>(const CartesianGrid<D>&, double, const std::vector<std::string>&, \
+                                         int, int);                                                        \
+    template std::string pvtiText<D>(const CartesianGrid<D>&, const std::vector<std::string>&, int,        \
+                                     const std::function<std::string(int)>&);
+MFDYN_GRID_PIECES(1)
+MFDYN_GRID_PIECES(2)
+MFDYN_GRID_PIECES(3)
+#undef MFDYN_GRID_PIECES
 template ExtraFile vtiFile<1>(const CartesianGrid<1>&, double, const std::string&,
                               const std::vector<std::string>&);
 template ExtraFile vtiFile<2>(const CartesianGrid<2>&, double, const std::string&,

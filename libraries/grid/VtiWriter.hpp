@@ -21,8 +21,10 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace mfdyn {
@@ -38,6 +40,33 @@ template <int Dim>
 ExtraFile vtiFile(const CartesianGrid<Dim>& grid, double time, const std::string& name = "grid.vti",
                   const std::vector<std::string>& fields = {});
 
+// On several ranks the image is written in pieces with an index (VTK's parallel image format),
+// so that each rank writes its part and ParaView opens the whole:
+//   grid.pvti     <VTKFile type="PImageData" ...><PImageData WholeExtent=".." GhostLevel="0"
+//                 Origin=".." Spacing=".."> the arrays' types (PPointData) and one
+//                 <Piece Extent=".." Source="grid_<r>.vti"/> per piece
+//   grid_<r>.vti  the .vti above of piece r's nodes, its extents the piece's
+// A piece is a slab of node layers along the grid's last axis (z in 3D, y in 2D): of C cells and
+// P pieces, piece r holds the cells [C r / P, C (r + 1) / P) and their nodes, so neighbouring
+// pieces share one node layer (the values there are the same in both), as VTK's pieces do.
+
+// The node layers [first, last] of piece `piece` of `pieces` over `cells` cells.
+std::pair<std::int64_t, std::int64_t> gridSlab(std::int64_t cells, int piece, int pieces);
+
+// How many pieces `ranks` ranks write: one each, at most one per cell layer.
+template <int Dim>
+int gridPieceCount(const CartesianGrid<Dim>& grid, int ranks);
+
+// The .vti of piece `piece` of `pieces` (fields as vtiText).
+template <int Dim>
+std::string vtiPieceText(const CartesianGrid<Dim>& grid, double time, const std::vector<std::string>& fields,
+                         int piece, int pieces);
+
+// The .pvti that indexes `pieces` pieces, piece r in the file pieceName(r).
+template <int Dim>
+std::string pvtiText(const CartesianGrid<Dim>& grid, const std::vector<std::string>& fields, int pieces,
+                     const std::function<std::string(int)>& pieceName);
+
 // A .vti read back (what vtiText writes; tests and tools). Arrays as in the file: `components`
 // values per node (padding included), doubles (Int64 arrays converted exactly below 2^53).
 struct VtiImage {
@@ -50,6 +79,7 @@ struct VtiImage {
     int dimension = 0;
     double time = 0.0;
     std::array<std::int64_t, 3> cells{0, 0, 0};  // the upper WholeExtent per axis
+    std::array<std::int64_t, 3> first{0, 0, 0};  // the lower one (a piece's first node layer)
     std::array<double, 3> origin{0, 0, 0}, spacing{0, 0, 0};
     std::vector<Array> arrays;
 

@@ -151,7 +151,9 @@ KeywordSchema MpmSolver<Dim>::keywords() {
         .optional()
         .dictionary("gridBoundaryConditions", "conditions on grid nodes (gridBoundaryCondition types)")
         .optional()
-        .flag("writeGrid", "write the node fields as grid.vti beside particles.vtp")
+        .flag("writeGrid",
+              "write the node fields as grid.vti beside particles.vtp (on several ranks grid.pvti over one "
+              "slab grid_<rank>.vti a rank)")
         .orDefault(false);
 }
 
@@ -194,7 +196,8 @@ MpmSolver<Dim>::MpmSolver(SolverRun& run)
     initialiseFields();
     decomposition_ = run.decomposition();
     if (decomposition_) {
-        haloFields_ = {"position", "velocity", "mass", "density", "jacobian", "cauchyStress", "material", "region"};
+        haloFields_ = {"position", "velocity",     "mass",     "density",
+                       "jacobian", "cauchyStress", "material", "region"};
         if (C_) haloFields_.push_back("affineVelocity");
         // Planned now: the decomposition's report in the log before the first step.
         updateDecomposition();
@@ -826,7 +829,8 @@ void MpmSolver<Dim>::updateStress(double dt, bool advanceState) {
     });
     // The plastic flow's dissipation (the budget's D; the law's |s| dgamma per reference volume).
     if (advanceState && plastic_)
-        dissipated_ += GlobalReduce::sum<double>(n, [&](std::size_t p) { return m_[p] / rho0_[p] * plasticLoss_[p]; });
+        dissipated_ +=
+            GlobalReduce::sum<double>(n, [&](std::size_t p) { return m_[p] / rho0_[p] * plasticLoss_[p]; });
 }
 
 template <int Dim>
@@ -946,7 +950,8 @@ void MpmSolver<Dim>::checkTorn() {
         particles_->refreshHalo(ownerLabel.data(), sizeof(std::int64_t));
         std::vector<std::pair<std::int64_t, std::int64_t>> local;
         for (std::size_t h = owned; h < n; ++h)
-            if (ownerLabel[h] != pieceLabel_[root[h]]) local.emplace_back(pieceLabel_[root[h]], ownerLabel[h]);
+            if (ownerLabel[h] != pieceLabel_[root[h]])
+                local.emplace_back(pieceLabel_[root[h]], ownerLabel[h]);
         std::sort(local.begin(), local.end());
         local.erase(std::unique(local.begin(), local.end()), local.end());
         std::vector<std::int64_t> flat;
@@ -982,7 +987,8 @@ void MpmSolver<Dim>::checkTorn() {
         size.clear();
         for (std::size_t k = 0; k + 1 < sizes.size(); k += 2) size[sizes[k]] += sizes[k + 1];
         flat.clear();
-        for (const auto& [key, first] : regionFirst) flat.push_back(key.first), flat.push_back(key.second), flat.push_back(first);
+        for (const auto& [key, first] : regionFirst)
+            flat.push_back(key.first), flat.push_back(key.second), flat.push_back(first);
         const std::vector<std::int64_t> firsts = globalConcatenation(flat);
         regionFirst.clear();
         for (std::size_t k = 0; k + 2 < firsts.size(); k += 3) {
@@ -1239,7 +1245,8 @@ std::vector<HealthIndicator> MpmSolver<Dim>::healthIndicators() const {
         const double m = massOf(j);
         return mapped && m >= massCutoff_ ? 0.5 * dt * std::sqrt(stiffness[j] / m) : 0.0;
     };
-    indicator.value = GlobalReduce::max(fields * nodes, [&](std::size_t j) { return countsNode(j % nodes) ? number(j) : 0.0; });
+    indicator.value = GlobalReduce::max(
+        fields * nodes, [&](std::size_t j) { return countsNode(j % nodes) ? number(j) : 0.0; });
     // The largest number over the nodes particle p reaches (N_Ip > 0).
     auto reached = [&](std::size_t p) {
         if (!mapped) return 0.0;
@@ -1276,18 +1283,38 @@ std::optional<double> MpmSolver<Dim>::potentialEnergy() const {
         x_.size(), [&](std::size_t i) { return m_[i] * bodyForce_->potential(x_[i].data()); });
 }
 
+namespace {
+const std::vector<std::string> gridOutputFields{"mass", "momentum", "velocity", "force"};
+std::string gridPieceName(int rank) {
+    return "grid_" + std::to_string(rank) + ".vti";
+}
+}  // namespace
+
 template <int Dim>
 std::vector<ExtraFile> MpmSolver<Dim>::extraOutput() const {
     if (!writeGrid_) return {};
-    const std::vector<std::string> fields{"mass", "momentum", "velocity", "force"};
-    if (!decomposition_) return {vtiFile(grid_, time().value(), "grid.vti", fields)};
-    return {vtiFile(gatheredGrid(fields), time().value(), "grid.vti", fields)};
+    if (!decomposition_) return {vtiFile(grid_, time().value(), "grid.vti", gridOutputFields)};
+    // The index of the ranks' slabs (pieceOutput); every rank's grid has the fields' types.
+    return {{"grid.pvti",
+             pvtiText(grid_, gridOutputFields, gridPieceCount(grid_, Communicator::size()), gridPieceName)}};
+}
+
+template <int Dim>
+std::vector<ExtraFile> MpmSolver<Dim>::pieceOutput() const {
+    if (!writeGrid_ || !decomposition_) return {};
+    // A rank's nodes are no box (each node is counted by the owner of the lowest-id particle
+    // reaching it), so the pieces are slabs along the last axis (VtiWriter.hpp), each filled
+    // from the gathered image: the values of the serial run's grid.vti to the bit.
+    const CartesianGrid<Dim> whole = gatheredGrid(gridOutputFields);
+    const int pieces = gridPieceCount(grid_, Communicator::size());
+    const int rank = Communicator::rank();
+    if (rank >= pieces) return {};
+    return {{gridPieceName(rank), vtiPieceText(whole, time().value(), gridOutputFields, rank, pieces)}};
 }
 
 template <int Dim>
 CartesianGrid<Dim> MpmSolver<Dim>::gatheredGrid(const std::vector<std::string>& fields) const {
-    // One image of the whole grid, as the serial run writes it (a rank's nodes are no box, so
-    // there are no .vti pieces to index in a .pvti): each node from the rank that counts it, the
+    // The whole grid as the serial run has it: each node from the rank that counts it, the
     // nodes no particle reaches from this rank's own arrays (zero, or what a grid condition set:
     // the same on every rank). The values travel as their bits (exact).
     CartesianGrid<Dim> whole(grid_.origin(), grid_.cellSize(), grid_.cells());
@@ -1301,7 +1328,9 @@ CartesianGrid<Dim> MpmSolver<Dim>::gatheredGrid(const std::vector<std::string>& 
             all = local;
             packed.clear();
             for (std::size_t I = 0; I < local.size(); ++I)
-                if (countsNode(I)) packed.push_back(std::int64_t(I)), packed.push_back(std::bit_cast<std::int64_t>(local[I]));
+                if (countsNode(I))
+                    packed.push_back(std::int64_t(I)),
+                        packed.push_back(std::bit_cast<std::int64_t>(local[I]));
             const auto gathered = globalConcatenation(packed);
             for (std::size_t k = 0; k + 1 < gathered.size(); k += 2)
                 all[std::size_t(gathered[k])] = std::bit_cast<double>(gathered[k + 1]);
@@ -1346,7 +1375,8 @@ std::vector<std::string> MpmSolver<Dim>::summary(double loopSeconds) const {
         lines.push_back(line);
     }
     if (decomposition_)
-        for (auto& l : decomposition_->summary(*particles_, double(steps_), "step")) lines.push_back(std::move(l));
+        for (auto& l : decomposition_->summary(*particles_, double(steps_), "step"))
+            lines.push_back(std::move(l));
     if (removedParticles_ > 0) {
         std::snprintf(line, sizeof line,
                       "outsideGrid remove   %zu particles, %.6g kg (%.4g%% of the initial mass)",

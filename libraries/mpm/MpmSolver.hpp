@@ -22,7 +22,8 @@
 //     isolatedParticles stop;          // stop | allow (extension instability: below)
 //     bodyForce       { type uniformGravity; g (0 -9.81); }              // optional
 //     gridBoundaryConditions { top { type slip; faces (yMax); } }        // optional
-//     writeGrid       no;              // grid.vti beside particles.vtp at each write
+//     writeGrid       no;              // grid.vti beside particles.vtp at each write (on
+//                                      // several ranks grid.pvti and a slab grid_<r>.vti a rank)
 //
 // system/controlDict: the CFL vote dt = maxCo min(dx) / (c + |v|) (maxCo default 0.3; c the
 // material's p-wave speed); `adjustTimeStep no;` keeps deltaT fixed (the thesis's way), checked
@@ -100,6 +101,7 @@ public:
     std::optional<double> externalWork() const override { return externalWork_; }
     std::vector<HealthIndicator> healthIndicators() const override;
     std::vector<ExtraFile> extraOutput() const override;
+    std::vector<ExtraFile> pieceOutput() const override;
     std::vector<std::string> summary(double loopSeconds) const override;
 
     const CartesianGrid<Dim>& grid() const { return grid_; }
@@ -203,8 +205,8 @@ private:
 
     ParticleNodeList<Dim> list_;
     ParticleColouring<Dim> colouring_;
-    std::vector<Vector<Dim>> halfSize_;  // uGIMP: half the particle's extent, 0.5 V0^(1/Dim)
-    std::vector<Vector<Dim>> nodeX_;     // the node positions (APIC's x_I - x_p), made once
+    std::vector<Vector<Dim>> halfSize_;                 // uGIMP: half the particle's extent, 0.5 V0^(1/Dim)
+    std::vector<Vector<Dim>> nodeX_;                    // the node positions (APIC's x_I - x_p), made once
     std::vector<std::size_t> pieceParent_, pieceRoot_;  // checkTorn: union-find over nodes, roots
     std::vector<std::int64_t> pieceLabel_;              // checkTorn: per root node, the lowest id
     std::int64_t particleSteps_ = 0;

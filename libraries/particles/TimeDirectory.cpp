@@ -154,13 +154,15 @@ std::string broadcastText(std::string text, int root) {
 }
 
 fs::path writePieces(const fs::path& target, const std::string& timeName, const ParticleSetBase& particles,
-                     const std::vector<ExtraFile>& extraFiles, std::optional<double> time) {
+                     const std::vector<ExtraFile>& extraFiles, std::optional<double> time,
+                     const std::vector<ExtraFile>& pieceFiles) {
     const int rank = Communicator::rank();
     double value = 0.0;
     std::exception_ptr failure;
     try {
         value = timeValue(timeName, time);
         checkExtraFileNames(extraFiles, timeName);
+        checkExtraFileNames(pieceFiles, timeName);
     } catch (...) {
         failure = std::current_exception();
     }
@@ -178,6 +180,7 @@ fs::path writePieces(const fs::path& target, const std::string& timeName, const 
     failure = nullptr;
     try {
         writeVtp(tmp / particlePieceFileName(rank), particles, value, nextGlobalId);
+        writeExtraFiles(tmp, pieceFiles);
     } catch (...) {
         failure = std::current_exception();
     }
@@ -242,13 +245,16 @@ void writeFileAtomically(const fs::path& file, const std::string& contents) {
 
 fs::path writeTimeDirectory(const fs::path& caseDir, const std::string& timeName,
                             const ParticleSetBase& particles, const std::vector<ExtraFile>& extraFiles,
-                            std::optional<double> time) {
+                            std::optional<double> time, const std::vector<ExtraFile>& pieceFiles) {
     const fs::path target = caseDir / timeName;
-    if (Communicator::distributed()) return writePieces(target, timeName, particles, extraFiles, time);
+    if (Communicator::distributed())
+        return writePieces(target, timeName, particles, extraFiles, time, pieceFiles);
     const double value = timeValue(timeName, time);
     checkExtraFileNames(extraFiles, timeName);
+    checkExtraFileNames(pieceFiles, timeName);
     writeDirectoryAtomically(target, [&](const fs::path& tmp) {
         writeVtp(tmp / particleFileName, particles, value);
+        writeExtraFiles(tmp, pieceFiles);
         writeExtraFiles(tmp, extraFiles);
     });
     return target;

@@ -40,12 +40,15 @@ const char* writtenParticleFileName();
 
 // Writes <caseDir>/<timeName>/particles.vtp (with `time`, by default the value of timeName)
 // and the extra files, atomically; an existing <timeName> is replaced. Returns the directory.
-// Distributed: collective; the pieces and their index instead of particles.vtp (above), and the
-// extra files are rank 0's (the state is the same on every rank).
+// Distributed: collective; the pieces and their index instead of particles.vtp (above), the
+// extra files rank 0's (the state is the same on every rank), and each rank's `pieceFiles` its
+// own (names that differ between ranks: grid_<rank>.vti); on one process the piece files are
+// written as the extra files are.
 std::filesystem::path writeTimeDirectory(const std::filesystem::path& caseDir, const std::string& timeName,
                                          const ParticleSetBase& particles,
                                          const std::vector<ExtraFile>& extraFiles = {},
-                                         std::optional<double> time = std::nullopt);
+                                         std::optional<double> time = std::nullopt,
+                                         const std::vector<ExtraFile>& pieceFiles = {});
 
 // The primitive beneath: `fill` writes into an empty temporary directory, which then replaces
 // `target`. If `fill` throws, the temporary directory is removed, `target` is left as it was and

@@ -60,6 +60,11 @@ public:
     // Files written into each time directory beside particles.vtp, in the same atomic write
     // (a background grid's fields); `state` is the loop's own name.
     virtual std::vector<ExtraFile> extraOutput() const { return {}; }
+    // This rank's own files of each time directory, written by every rank beside its particle
+    // piece (a grid's piece grid_<rank>.vti, indexed by an extraOutput's grid.pvti); on one
+    // process written as the extra files are. Collective: called on every rank, once per write,
+    // before extraOutput.
+    virtual std::vector<ExtraFile> pieceOutput() const { return {}; }
     // The dictionaries this solver read, for the never-read-entry check at the end of set-up:
     // by default every one opened through openConstant/openOptionalConstant, in that order.
     virtual std::vector<const Dictionary*> dictionaries() const;

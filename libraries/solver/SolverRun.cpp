@@ -153,12 +153,14 @@ void SolverRun::decompose(const std::string& particleFile) {
         settings.method = decomposeParDict_->getOrDefault<std::string>("method", settings.method);
         const auto& methods = Partitioner::methods();
         if (std::find(methods.begin(), methods.end(), settings.method) == methods.end())
-            throw decomposeParDict_->error("method", "unknown partitioning method '" + settings.method +
-                                                         "'; valid methods: rcb, hsfc");
-        settings.maxImbalance = decomposeParDict_->getOrDefault<double>("maxImbalance", settings.maxImbalance);
+            throw decomposeParDict_->error(
+                "method", "unknown partitioning method '" + settings.method + "'; valid methods: rcb, hsfc");
+        settings.maxImbalance =
+            decomposeParDict_->getOrDefault<double>("maxImbalance", settings.maxImbalance);
         if (!(settings.maxImbalance >= 1.0))
-            throw decomposeParDict_->error("maxImbalance", "maxImbalance must be at least 1 (the heaviest rank's "
-                                                           "load over the mean that triggers a rebalance)");
+            throw decomposeParDict_->error("maxImbalance",
+                                           "maxImbalance must be at least 1 (the heaviest rank's "
+                                           "load over the mean that triggers a rebalance)");
     }
     decomposition_ = std::make_unique<Decomposition>(settings, particles_->dimension());
     decomposition_->distribute(*particles_, particleFile);
@@ -173,8 +175,10 @@ SolverRun::~SolverRun() = default;
 
 void SolverRun::refuseSeveralRanks() const {
     if (decomposition_)
-        throw InputError(application_ + " does not run on several ranks yet (issue 21: impactSph does); run it "
-                                        "without mpirun, on one process");
+        throw InputError(
+            application_ +
+            " does not run on several ranks yet (impactSph, tlSph, mpmFsi and fpmSolid do); run it "
+            "without mpirun, on one process");
 }
 
 void SolverRun::prepareOutputs() {
@@ -241,17 +245,20 @@ void SolverRun::write(Solver& solver) {
     }
     std::string state = "// Restart state of " + application_ + " at time " + time.timeName() +
                         " (read by startFrom latestTime)\n" + time.state() + solver.solverState();
+    const std::vector<ExtraFile> pieces = solver.pieceOutput();
     std::vector<ExtraFile> files{{"state", state}};
     for (auto& file : solver.extraOutput()) files.push_back(std::move(file));
-    writeTimeDirectory(case_.root(), time.timeName(), solver.particles(), files, time.value());
+    writeTimeDirectory(case_.root(), time.timeName(), solver.particles(), files, time.value(), pieces);
     // The index and the purge are the case's files: rank 0's alone (it keeps the index in memory).
     onRankZero([&] {
         pvd_->add(time.value(), time.timeName() + "/" + writtenParticleFileName());
-        // A grid method's image files (grid.vti) are further parts of the same time, so ParaView
-        // opens the grid with the particles (PvdIndex.hpp); the state and other files are not VTK.
+        // A grid method's image files (grid.vti, or on several ranks the index grid.pvti of the
+        // ranks' pieces) are further parts of the same time, so ParaView opens the grid with the
+        // particles (PvdIndex.hpp); the state and other files are not VTK.
         int part = 0;
         for (const auto& [name, contents] : files)
-            if (name.ends_with(".vti")) pvd_->add(time.value(), time.timeName() + "/" + name, ++part);
+            if (name.ends_with(".vti") || name.ends_with(".pvti"))
+                pvd_->add(time.value(), time.timeName() + "/" + name, ++part);
         pvd_->write();
     });
     lastWritten_ = time.timeName();
@@ -520,10 +527,12 @@ void SolverRun::summary(const Solver& solver, double steppingSeconds, std::int64
     // over the ranks (the slowest rank sets the pace; every rank reaches these reductions, whatever
     // phases it skipped).
     const int ranks = Communicator::size();
-    const std::string workers = ranks > 1 ? std::to_string(ranks) + " ranks x " + std::to_string(threadCount()) + " threads"
-                                          : std::to_string(threadCount()) + " threads";
+    const std::string workers =
+        ranks > 1 ? std::to_string(ranks) + " ranks x " + std::to_string(threadCount()) + " threads"
+                  : std::to_string(threadCount()) + " threads";
     std::snprintf(line, sizeof line, "    particle-steps/s     %.4g (%s)\n",
-                  steppingSeconds > 0 ? double(n) * double(stepsRun) / steppingSeconds : 0.0, workers.c_str());
+                  steppingSeconds > 0 ? double(n) * double(stepsRun) / steppingSeconds : 0.0,
+                  workers.c_str());
     s << line;
     s << "    peak memory          " << formatBytes(globalMax(double(peakMemoryBytes())))
       << (ranks > 1 ? " (the largest rank's)" : "") << "\n";

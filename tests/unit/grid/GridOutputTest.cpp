@@ -119,6 +119,70 @@ TEST(VtiWriter, oneAndThreeDimensionsAndErrors) {
     EXPECT_THROW(parseVti("<VTKFile type=\"PolyData\"/>", "other.vti"), InputError);
 }
 
+// Pieces (several ranks' grid output): slabs along the last axis that share one node layer,
+// each the whole image's values there to the bit, and an index that names them with their
+// extents; no more pieces than cell layers.
+TEST(VtiWriter, piecesAreSlabsOfTheWholeImage) {
+    CartesianGrid<3> cube(Vector<3>(0, -1, 0.5), Vector<3>(0.5, 0.25, 0.125), {2, 3, 7});
+    auto& mass = cube.nodes().field<double>("mass");
+    auto& v = cube.nodes().field<Vector<3>>("velocity");
+    for (std::size_t n = 0; n < cube.nodeCount(); ++n) {
+        mass[n] = 1.0 / double(n + 3);
+        v[n] = Vector<3>(double(n), -std::sqrt(double(n)), 1.0 / double(n + 1));
+    }
+    const VtiImage whole = parseVti(vtiText(cube, 0.5), "grid.vti");
+    const std::size_t layer = 3 * 4;  // nodes in an xy layer
+    for (int pieces : {1, 2, 3, 7}) {
+        std::int64_t expectedFirst = 0;
+        for (int r = 0; r < pieces; ++r) {
+            const VtiImage piece = parseVti(vtiPieceText(cube, 0.5, {}, r, pieces), "grid_r.vti");
+            const auto [first, last] = gridSlab(7, r, pieces);
+            EXPECT_EQ(first, expectedFirst) << "pieces share their boundary layer";
+            expectedFirst = last;
+            EXPECT_EQ(piece.first, (std::array<std::int64_t, 3>{0, 0, first}));
+            EXPECT_EQ(piece.cells, (std::array<std::int64_t, 3>{2, 3, last}));
+            EXPECT_EQ(piece.origin, whole.origin);
+            EXPECT_EQ(piece.spacing, whole.spacing);
+            EXPECT_EQ(piece.time, 0.5);
+            ASSERT_EQ(piece.arrays.size(), whole.arrays.size());
+            for (std::size_t a = 0; a < whole.arrays.size(); ++a) {
+                const auto& all = whole.arrays[a].values;
+                const std::size_t width = std::size_t(whole.arrays[a].components);
+                const std::vector<double> slab(
+                    all.begin() + std::ptrdiff_t(std::size_t(first) * layer * width),
+                    all.begin() + std::ptrdiff_t(std::size_t(last + 1) * layer * width));
+                EXPECT_EQ(piece.arrays[a].values, slab)
+                    << whole.arrays[a].name << ", piece " << r << " of " << pieces;
+            }
+        }
+        EXPECT_EQ(expectedFirst, 7) << "the last piece ends at the last layer";
+    }
+    EXPECT_EQ(gridPieceCount(cube, 3), 3);
+    EXPECT_EQ(gridPieceCount(cube, 9), 7);  // one cell layer a piece at most
+
+    const std::string index =
+        pvtiText(cube, {"velocity"}, 2, [](int r) { return "grid_" + std::to_string(r) + ".vti"; });
+    EXPECT_NE(index.find("<PImageData WholeExtent=\"0 2 0 3 0 7\" GhostLevel=\"0\""), std::string::npos)
+        << index;
+    EXPECT_NE(index.find("<PDataArray type=\"Float64\" Name=\"velocity\" NumberOfComponents=\"3\"/>"),
+              std::string::npos)
+        << index;
+    EXPECT_EQ(index.find("mass"), std::string::npos) << "only the fields asked for";
+    EXPECT_NE(index.find("<Piece Extent=\"0 2 0 3 0 3\" Source=\"grid_0.vti\"/>"), std::string::npos)
+        << index;
+    EXPECT_NE(index.find("<Piece Extent=\"0 2 0 3 3 7\" Source=\"grid_1.vti\"/>"), std::string::npos)
+        << index;
+
+    // In 2D the slabs run along y.
+    CartesianGrid<2> plane(Vector<2>(0, 0), Vector<2>(1, 1), {4, 5});
+    plane.nodes().field<double>("mass")[plane.nodeIndex({4, 5})] = 2.0;
+    const VtiImage top = parseVti(vtiPieceText(plane, 0.0, {}, 1, 2), "grid_1.vti");
+    EXPECT_EQ(top.first, (std::array<std::int64_t, 3>{0, 2, 0}));
+    EXPECT_EQ(top.cells, (std::array<std::int64_t, 3>{4, 5, 0}));
+    EXPECT_EQ(top.find("mass")->values.back(), 2.0);
+    EXPECT_EQ(top.find("mass")->values.size(), 5u * 4u);
+}
+
 // ---- a grid method in a few lines: particles drift, the grid counts the steps ----------------
 template <int Dim>
 class GridDriftSolver final : public Solver {
