@@ -63,6 +63,23 @@ $out"
     echo "$out" | sed 's/^/    /'
 }
 
+# againstSerial <application> <case> <report> <ranks...>: the case run serially (copy
+# <name>.serial) and on each number of ranks (copies <name>.<n>), each distributed log holding
+# <report> (the decomposition's), each final state the serial one (sameState).
+againstSerial() {
+    local app="$1" c="$2" report="$3" name serial d n
+    shift 3
+    name=$(basename "$c")
+    serial=$(copyCase "$c" "$WORK/$name.serial")
+    "$app" -case "$serial" > "$serial/log.$app" 2>&1 || fail "$name serially: $(tail -5 "$serial/log.$app")"
+    for n in "$@"; do
+        d=$(copyCase "$c" "$WORK/$name.$n")
+        onRanks "$n" "$app" -case "$d" > "$d/log.$app" 2>&1 || fail "$name on $n ranks: $(tail -5 "$d/log.$app")"
+        grep -q "$report" "$d/log.$app" || fail "$name on $n ranks: no '$report' in the log"
+        sameState "$name on $n ranks against the serial run" "$(latest "$serial")" "$(latest "$d")"
+    done
+}
+
 # latest <case>: its latest time directory.
 latest() {
     local t

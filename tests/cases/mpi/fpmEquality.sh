@@ -33,17 +33,7 @@ for c in "$tube" "$plate" "$cube" "$sphere"; do
     particleGen -case "$c" > "$c/log.particleGen" 2>&1 || fail "particleGen: $(tail -3 "$c/log.particleGen")"
 done
 
-for c in "$tube" "$plate" "$cube" "$sphere"; do
-    name=$(basename "$c")
-    serial=$(copyCase "$c" "$WORK/$name.serial")
-    fpmSolid -case "$serial" > "$serial/log.fpmSolid" 2>&1 || fail "$name serially: $(tail -5 "$serial/log.fpmSolid")"
-    for n in 2 3; do
-        d=$(copyCase "$c" "$WORK/$name.$n")
-        onRanks "$n" fpmSolid -case "$d" > "$d/log.fpmSolid" 2>&1 || fail "$name on $n ranks: $(tail -5 "$d/log.fpmSolid")"
-        grep -q "Decomposition (" "$d/log.fpmSolid" || fail "$name on $n ranks: no decomposition in the log"
-        sameState "$name on $n ranks against the serial run" "$(latest "$serial")" "$(latest "$d")"
-    done
-done
+for c in "$tube" "$plate" "$cube" "$sphere"; do againstSerial fpmSolid "$c" "Decomposition (" 2 3; done
 # The first migration is the start's; the cube turns through its halo's skin several times.
 migrations=$(sed -n 's/.*decomposition .*, \([0-9]*\) migrations.*/\1/p' "$WORK/rotationOnly.3/log.fpmSolid")
 [ "${migrations:-0}" -gt 2 ] ||
@@ -61,16 +51,12 @@ filled=$(copyCase "$tube" "$WORK/filledTube")
 echo "particleManagement { insert yes; holeSize 0.3; merge yes; mergeDistance 0.1; }" >> "$filled/constant/fpmProperties"
 for c in "$flat" "$filled"; do
     name=$(basename "$c")
-    serial=$(copyCase "$c" "$WORK/$name.serial")
-    fpmSolid -case "$serial" > "$serial/log.fpmSolid" 2>&1 || fail "$name serially: $(tail -5 "$serial/log.fpmSolid")"
-    managed=$(grep "particle management  " "$serial/log.fpmSolid")
+    againstSerial fpmSolid "$c" "Decomposition (" 2 3
+    managed=$(grep "particle management  " "$WORK/$name.serial/log.fpmSolid")
     case "$managed" in *" 0 inserted, 0 pairs merged"*) fail "$name: no particle inserted or merged: $managed" ;; esac
     for n in 2 3; do
-        d=$(copyCase "$c" "$WORK/$name.$n")
-        onRanks "$n" fpmSolid -case "$d" > "$d/log.fpmSolid" 2>&1 || fail "$name on $n ranks: $(tail -5 "$d/log.fpmSolid")"
-        [ "$(grep "particle management  " "$d/log.fpmSolid")" = "$managed" ] ||
-            fail "$name on $n ranks: $(grep "particle management  " "$d/log.fpmSolid"), serially $managed"
-        sameState "$name on $n ranks against the serial run" "$(latest "$serial")" "$(latest "$d")"
+        [ "$(grep "particle management  " "$WORK/$name.$n/log.fpmSolid")" = "$managed" ] ||
+            fail "$name on $n ranks: $(grep "particle management  " "$WORK/$name.$n/log.fpmSolid"), serially $managed"
     done
 done
 pass "fpmSolid: the shock tube, the oscillating plate, the rotating cube, the shearing sphere and, with particle management, the flattening sphere and a filled tube end in the serial state on 2 and 3 ranks"

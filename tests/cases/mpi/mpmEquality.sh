@@ -56,25 +56,18 @@ grep -q "^scheme          USF;" "$dam/constant/mpmProperties" || fail "the dam b
 grep -q "^contact         multiField;" "$multi/constant/mpmProperties" || fail "the disks' contact was not set to multiField"
 grep -q "^pressureSmoothing cellJacobian;" "$smooth/constant/mpmProperties" || fail "the dam break's pressureSmoothing was not set"
 
-for c in "$disks" "$multi" "$dam" "$smooth"; do
-    name=$(basename "$c")
-    serial=$(copyCase "$c" "$WORK/$name.serial")
-    mpmFsi -case "$serial" > "$serial/log.mpmFsi" 2>&1 || fail "$name serially: $(tail -5 "$serial/log.mpmFsi")"
-    for n in 2 3; do
-        d=$(copyCase "$c" "$WORK/$name.$n")
-        onRanks "$n" mpmFsi -case "$d" > "$d/log.mpmFsi" 2>&1 || fail "$name on $n ranks: $(tail -5 "$d/log.mpmFsi")"
-        grep -q "halo width" "$d/log.mpmFsi" || fail "$name on $n ranks: no decomposition report in the log"
-        sameState "$name on $n ranks against the serial run" "$(latest "$serial")" "$(latest "$d")"
-        if [ "$name" = multi ]; then
-            pieces=$(python3 "$(dirname "$0")/gridPieces.py" "$serial/1.8/grid.vti" "$d/1.8" "$n") ||
-                fail "multi on $n ranks: $pieces"
-            grep -q '"1.8/grid.pvti"' "$d/particles.pvd" || fail "multi on $n ranks: particles.pvd does not list 1.8/grid.pvti"
-            peak() { grep -o "peak pair force [0-9.e+-]* N" "$1" || echo "none"; }
-            [ "$(peak "$serial/log.mpmFsi")" = "$(peak "$d/log.mpmFsi")" ] && [ "$(peak "$d/log.mpmFsi")" != none ] ||
-                fail "multi on $n ranks: $(peak "$d/log.mpmFsi") against the serial $(peak "$serial/log.mpmFsi")"
-            echo "multi on $n ranks: $pieces, $(peak "$d/log.mpmFsi")"
-        fi
-    done
+for c in "$disks" "$multi" "$dam" "$smooth"; do againstSerial mpmFsi "$c" "halo width" 2 3; done
+# The multi-field disks' grid, in pieces, and their contact force (a sum over the counted nodes).
+peak() { grep -o "peak pair force [0-9.e+-]* N" "$1" || echo "none"; }
+serial="$WORK/multi.serial"
+for n in 2 3; do
+    d="$WORK/multi.$n"
+    pieces=$(python3 "$(dirname "$0")/gridPieces.py" "$serial/1.8/grid.vti" "$d/1.8" "$n") ||
+        fail "multi on $n ranks: $pieces"
+    grep -q '"1.8/grid.pvti"' "$d/particles.pvd" || fail "multi on $n ranks: particles.pvd does not list 1.8/grid.pvti"
+    [ "$(peak "$serial/log.mpmFsi")" = "$(peak "$d/log.mpmFsi")" ] && [ "$(peak "$d/log.mpmFsi")" != none ] ||
+        fail "multi on $n ranks: $(peak "$d/log.mpmFsi") against the serial $(peak "$serial/log.mpmFsi")"
+    echo "multi on $n ranks: $pieces, $(peak "$d/log.mpmFsi")"
 done
 
 # The torn block: status 1 and the serial diagnosis.

@@ -45,17 +45,7 @@ for c in "$cube" "$bar" "$plate"; do
     particleGen -case "$c" > "$c/log.particleGen" 2>&1 || fail "particleGen: $(tail -3 "$c/log.particleGen")"
 done
 
-for c in "$cube" "$bar" "$plate"; do
-    name=$(basename "$c")
-    serial=$(copyCase "$c" "$WORK/$name.serial")
-    tlSph -case "$serial" > "$serial/log.tlSph" 2>&1 || fail "$name serially: $(tail -5 "$serial/log.tlSph")"
-    for n in 2 3; do
-        d=$(copyCase "$c" "$WORK/$name.$n")
-        onRanks "$n" tlSph -case "$d" > "$d/log.tlSph" 2>&1 || fail "$name on $n ranks: $(tail -5 "$d/log.tlSph")"
-        grep -q "Halo: " "$d/log.tlSph" || fail "$name on $n ranks: no halo in the log"
-        sameState "$name on $n ranks against the serial run" "$(latest "$serial")" "$(latest "$d")"
-    done
-done
+for c in "$cube" "$bar" "$plate"; do againstSerial tlSph "$c" "Halo: " 2 3; done
 # A restart: the cube to 3 ms on 2 ranks, on to 6 ms on 3 ranks (a state with its reference
 # configuration: the cut is made in X), against the serial run straight to 6 ms.
 straight=$(copyCase "$cube" "$WORK/cube.straight")
