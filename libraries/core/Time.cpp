@@ -2,6 +2,7 @@
 
 #include "core/ExactReal.hpp"
 #include "core/Log.hpp"
+#include "core/Parallel.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -10,6 +11,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <exception>
+#include <fstream>
 #include <optional>
 #include <sstream>
 
@@ -144,8 +146,7 @@ void Time::readControls(const Dictionary& dict) {
     if (!adjustTimeStep_) deltaT_ = desiredDeltaT_ = fixedDeltaT_;
 }
 
-std::string Time::checkModified() {
-    if (!runTimeModifiable_) return {};
+std::string Time::modifiedControlDictText() {
     const double now =
         std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
     if (now - lastCheck_ < 0.5) return {};
@@ -154,14 +155,28 @@ std::string Time::checkModified() {
     const auto stamp = fs::last_write_time(controlDictPath_, ec);
     if (ec || stamp == controlDictStamp_) return {};
     controlDictStamp_ = stamp;
+    std::ifstream in(controlDictPath_, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    return "+" + text.str();  // marked: an emptied file is a change too (and fails to parse)
+}
 
+std::string Time::checkModified() {
+    if (!runTimeModifiable_) return {};
+    // On several ranks rank 0 alone watches the clock and the file, and every rank parses rank
+    // 0's text: ranks that each watched on their own clock took an edit at different steps, and a
+    // rank with another endTime, stopAt or writeInterval left the loop or wrote alone (a hang;
+    // test mpi.modified). One small collective a step.
+    std::string changed = Communicator::rank() == 0 ? modifiedControlDictText() : std::string();
+    changed = globalFirstMessage(Communicator::rank() == 0 ? 0 : noMessageKey, std::move(changed));
+    if (changed.empty()) return {};
     const double oldEnd = endTime_, oldInterval = writeInterval_;
     const StopAt oldStop = stopAt_;
     // A half-edited file must not kill a long run: keep the old controls and say why. The new
     // ones are read into a copy, so an error half way leaves none of them half applied.
     try {
         Time next(*this);
-        next.readControls(Dictionary::read(controlDictPath_));
+        next.readControls(Dictionary::parse(std::string_view(changed).substr(1), controlDictPath_.string()));
         *this = next;
     } catch (const Error& e) {
         Log::warning(

@@ -49,6 +49,7 @@ public:
     void readControls(const Dictionary& controlDict);
     // runTimeModifiable: re-reads controlDict if its modification time changed (checked at most
     // twice a second). Returns a description of the changes, empty when nothing changed.
+    // Collective on several ranks: rank 0 looks, and every rank applies rank 0's text.
     std::string checkModified();
 
     // The start: "startTime" or "latestTime" resolved by the caller to a directory; restore()
@@ -103,6 +104,9 @@ private:
     // An InputError when two write times ahead get the same name (writePrecision too low).
     void checkWriteNames() const;
 
+    // Rank 0's look at controlDict for checkModified: "+" and its text when it changed since the
+    // last look (at most every 0.5 s), else empty.
+    std::string modifiedControlDictText();
     std::filesystem::path controlDictPath_;
     std::filesystem::file_time_type controlDictStamp_{};
     double lastCheck_ = 0;
