@@ -44,8 +44,9 @@ BoundaryCondition<Dim>::~BoundaryCondition() = default;
 
 template <int Dim>
 std::string BoundaryCondition<Dim>::describe() const {
+    // The count over every rank (a rank selects among its own particles).
     std::string s = name_ + ": " + type_ + " on " + selection_.describe() + ", " +
-                    std::to_string(selection_.size()) + " particles";
+                    std::to_string(globalSum(std::size_t(selection_.size()))) + " particles";
     if (releaseTime_ < std::numeric_limits<double>::infinity()) {
         std::ostringstream release;
         release << ", released at t = " << releaseTime_ << " s";  // 0.007, not 0.007000

@@ -89,7 +89,8 @@ public:
     double releaseTime() const { return releaseTime_; }
     // True while the condition holds: t < releaseTime.
     bool active(double t) const { return t < releaseTime_; }
-    // For the log: "chamber: fixed on regions (wall), 120 particles".
+    // For the log: "chamber: fixed on regions (wall), 120 particles". Collective on several ranks
+    // (the counts are over every rank).
     virtual std::string describe() const;
 
     void updateSelection(const ParticleSet<Dim>& particles) {

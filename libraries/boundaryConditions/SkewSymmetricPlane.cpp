@@ -56,7 +56,8 @@ SkewSymmetricPlane<Dim>::SkewSymmetricPlane(const KeywordValues& values, const P
 
 template <int Dim>
 std::string SkewSymmetricPlane<Dim>::describe() const {
-    return BoundaryCondition<Dim>::describe() + ", " + std::to_string(indices_.size()) + " on the plane";
+    return BoundaryCondition<Dim>::describe() + ", " +
+           std::to_string(globalSum(std::size_t(indices_.size()))) + " on the plane";
 }
 
 template <int Dim>

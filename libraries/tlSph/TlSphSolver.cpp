@@ -583,8 +583,8 @@ void TlSphSolver<Dim>::computeStress(bool updateState) {
     });
     // The return's loss of every owned particle (ghosts are images): a conservation sum.
     if (updateState && plastic_)
-        plasticDissipation_ +=
-            GlobalReduce::sum<double>(particles_->ownedCount(), [&](std::size_t i) { return plasticLoss_[i]; });
+        plasticDissipation_ += GlobalReduce::sum<double>(particles_->ownedCount(),
+                                                         [&](std::size_t i) { return plasticLoss_[i]; });
 }
 
 template <int Dim>
@@ -627,7 +627,7 @@ void TlSphSolver<Dim>::makeMirrorGhosts() {
     }
     Log::info("Mirror ghosts: " + std::to_string(ghosts_.size()) + " reference images across " +
               std::to_string(mirrors.size()) + " symmetry/skew-symmetric planes (depth " +
-              std::to_string(depth) + ")");
+              std::to_string(depth) + ")" + (Communicator::distributed() ? " on rank 0" : ""));
 }
 
 template <int Dim>

@@ -63,9 +63,14 @@ $out"
     echo "$out" | sed 's/^/    /'
 }
 
+# The log's boundary-condition lines ("wall: symmetryPlane on all particles, 4212 particles"):
+# their counts are over every rank.
+conditionLines() { grep -E "^[^ ]+: [A-Za-z]+ on .*[0-9]+ particles" "$1" || true; }
+
 # againstSerial <application> <case> <report> <ranks...>: the case run serially (copy
 # <name>.serial) and on each number of ranks (copies <name>.<n>), each distributed log holding
-# <report> (the decomposition's), each final state the serial one (sameState).
+# <report> (the decomposition's) and the serial run's boundary-condition lines, each final state
+# the serial one (sameState).
 againstSerial() {
     local app="$1" c="$2" report="$3" name serial d n
     shift 3
@@ -76,6 +81,8 @@ againstSerial() {
         d=$(copyCase "$c" "$WORK/$name.$n")
         onRanks "$n" "$app" -case "$d" > "$d/log.$app" 2>&1 || fail "$name on $n ranks: $(tail -5 "$d/log.$app")"
         grep -q "$report" "$d/log.$app" || fail "$name on $n ranks: no '$report' in the log"
+        [ "$(conditionLines "$d/log.$app")" = "$(conditionLines "$serial/log.$app")" ] ||
+            fail "$name on $n ranks: boundary conditions $(conditionLines "$d/log.$app"), serially $(conditionLines "$serial/log.$app")"
         sameState "$name on $n ranks against the serial run" "$(latest "$serial")" "$(latest "$d")"
     done
 }
