@@ -1,11 +1,13 @@
 #!/bin/sh
 # Distributed runs (issue 21): strong scaling of the 3D impact (impactSph, bench/impactSph/impact3D,
-# a sphere on a plate, 33 024 particles) and the twisting column (tlSph, bench/tlSph/twistingColumn)
-# from 1 to 2 ranks of one thread each on this machine, beside 1 rank of 2 threads (the same two
-# cores through OpenMP), and for each a weak-scaling model (model.awk) from the measured halo
-# traffic. Usage:
-#   bench/mpi/run.sh [impactEndTime=5e-8] [columnEndTime=0.01]
-# (13 steps of the impact, 100 of the column at 13 x 73 x 13).
+# a sphere on a plate, 33 024 particles), the twisting column (tlSph, bench/tlSph/twistingColumn),
+# the dam break (mpmFsi, tutorials/mpmFsi/damBreak at half its spacing: 12 800 points) and
+# the rotating sphere (fpmSolid, tutorials/fpmSolid/rotatingSphere, 1244 particles) from 1 to 2
+# ranks of one thread each on this machine, beside 1 rank of 2 threads (the same two cores through
+# OpenMP), and for each a weak-scaling model (model.awk) from the measured halo traffic. Usage:
+#   bench/mpi/run.sh [impactEndTime=5e-8] [columnEndTime=0.01] [damEndTime=0.01] [sphereEndTime=0.1]
+# (13 steps of the impact, 100 of the column at 13 x 73 x 13, about 190 of the dam, 100 of the sphere). CASES (default
+# "impact3D twistingColumn damBreak rotatingSphere") picks some of them.
 # Environment: MFDYN_BIN (a bin/ folder with impactSph and particleGen built with MPI; default:
 # configure and build build-bench/ from this tree), WORK (scratch; default a fresh
 # /tmp/mpiBench.XXXX), MPIRUN (default: mpirun --oversubscribe, with --allow-run-as-root as root).
@@ -15,10 +17,13 @@ root=$(cd "$(dirname "$0")/../.." && pwd)
 here=$root/bench/mpi
 impactEndTime=${1:-5e-8}
 columnEndTime=${2:-0.01}
+damEndTime=${3:-0.01}
+sphereEndTime=${4:-0.1}
+CASES=${CASES:-"impact3D twistingColumn damBreak rotatingSphere"}
 if [ -z "$MFDYN_BIN" ]; then
     build=${MFDYN_BENCH_BUILD:-$root/build-bench}
     cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DMFDYN_BENCH=ON -DMFDYN_TESTS=OFF >/dev/null
-    ninja -C "$build" -j"${JOBS:-2}" impactSph tlSph particleGen
+    ninja -C "$build" -j"${JOBS:-2}" impactSph tlSph mpmFsi fpmSolid particleGen
     MFDYN_BIN=$build/bin
 fi
 if [ -z "$MPIRUN" ]; then
@@ -75,9 +80,15 @@ benchCase() {
 "
 }
 
-benchCase impact3D impactSph "$root/bench/impactSph/impact3D" "$impactEndTime"
+picked() { case " $CASES " in *" $1 "*) return 0 ;; esac; return 1; }
+picked impact3D && benchCase impact3D impactSph "$root/bench/impactSph/impact3D" "$impactEndTime"
 # The column at 13 x 73 x 13 (12 337 particles; dt about 1e-4 s: 100 steps to 0.01 s).
-benchCase twistingColumn tlSph "$root/bench/tlSph/twistingColumn" "$columnEndTime" 's/points (5 25 5);/points (13 73 13);/'
+picked twistingColumn &&
+    benchCase twistingColumn tlSph "$root/bench/tlSph/twistingColumn" "$columnEndTime" 's/points (5 25 5);/points (13 73 13);/'
+# The dam break's water column at half the tutorial's spacing (12 800 points, 4 a cell; the grid unchanged).
+damLattice='s/cells (40 80);/cells (80 160);/'
+picked damBreak && benchCase damBreak mpmFsi "$root/tutorials/mpmFsi/damBreak" "$damEndTime" "$damLattice"
+picked rotatingSphere && benchCase rotatingSphere fpmSolid "$root/tutorials/fpmSolid/rotatingSphere" "$sphereEndTime"
 
 echo "$models" >> "$results"
 echo "load average before: $loadStart, after: $(cut -d' ' -f1-3 /proc/loadavg); commit $(git -C "$root" rev-parse --short HEAD)" >> "$results"

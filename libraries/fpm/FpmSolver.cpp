@@ -1878,22 +1878,9 @@ std::vector<std::string> FpmSolver<Dim>::summary(double) const {
                       flowRelative_.S);
         lines.push_back(line);
     }
-    if (decomposition_) {
-        // How often the halo was planned again, its size, and its traffic per step (bench/mpi).
-        const double ranks = globalSum(1.0);
-        const double owned = globalSum(double(owner_->ownedCount()));
-        const double halo = globalSum(double(decomposition_->haloSize()));
-        const double bytes = globalSum(double(decomposition_->bytesSent()));
-        const double steps = std::max(1.0, double(time().timeIndex()));
-        std::snprintf(
-            line, sizeof line,
-            "decomposition        %.0f ranks (%s), %d migrations, %d partitions; halo %.0f particles "
-            "(%.3g of the owned), width %.4g; %.4g bytes per particle per step",
-            ranks, decomposition_->partitioner().method().c_str(), decomposition_->migrations(),
-            decomposition_->rebalances(), halo, owned > 0 ? halo / owned : 0.0, haloWidth_,
-            owned > 0 ? bytes / owned / steps : 0.0);
-        lines.push_back(line);
-    }
+    if (decomposition_)  // the shared two lines: migrations, halo, its traffic per step (bench/mpi)
+        for (auto& l : decomposition_->summary(*owner_, double(time().timeIndex()), "step"))
+            lines.push_back(l);
     if (reference_) {
         std::snprintf(
             line, sizeof line,
