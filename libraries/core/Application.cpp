@@ -176,8 +176,8 @@ int failWith(const std::string& text) {
         if (Communicator::rank() == 0) std::cerr << text << std::endl;
         return 1;
     }
-    std::cerr << "\n(" << Communicator::rankName() << ", the other ranks did not stop with it: the job is ended)"
-              << text << std::endl;
+    std::cerr << "\n(" << Communicator::rankName()
+              << ", the other ranks did not stop with it: the job is ended)" << text << std::endl;
     Communicator::abortAll(1);
 }
 
@@ -213,6 +213,13 @@ int runApplication(int argc, char** argv, const ApplicationInfo& info,
         if (args.positional().size() < info.positional.size())
             throw InputError("missing argument <" + info.positional[args.positional().size()] + ">\n" +
                              usage(info));
+        // A utility under mpirun would run once per rank on the same case (N copies of particleGen's
+        // particles, N writers of one file): the solvers alone run distributed (info.solver; the
+        // solver registry refuses those that do not).
+        if (Communicator::distributed() && info.solver.empty())
+            throw InputError(info.name +
+                             " runs on one process: start it without mpirun (the solvers run on several "
+                             "ranks and read what it writes on any number)");
         return body(args);
     } catch (const Error& e) {
         return failWith(std::string("\nError: ") + e.what() + "\n");
