@@ -15,6 +15,7 @@
 //     mirrorGhosts     withList;      // or everyStep (the ghost layer and the list rebuilt each step)
 //     momentum         variational;   // or difference (non-conservative, for comparison)
 //     integrator       leapfrog;      // or predictorCorrector (midpoint rule, two rate evaluations)
+//     courantSpeed     longitudinal;  // or bulk (the Courant limit on the equation of state's c alone)
 //     artificialStress { epsilon 0.3; exponent 4; }   // against tensile instability (strength only)
 //
 // constant/materialProperties:  materials { name { equationOfState { type idealGas; gamma 1.4; }
@@ -125,6 +126,8 @@ private:
     std::unique_ptr<SmoothingLengthLaw> hLaw_;
     std::unique_ptr<Dissipation> dissipation_;  // its pair terms run inside computeRates' loop
     double densityRateLimit_;
+    // Per material, M of the Courant speed sqrt(c^2 + M/rho) (empty: c alone; SphSolver.cpp's head).
+    std::vector<double> longitudinalStiffness_;
     double neighbourSkin_;
     double omegaMin_;
     bool differenceForm_;

@@ -30,6 +30,8 @@ public:
 
     // 2mu, the factor of the deviatoric strain rate (2G unless shearFactor 1).
     double twoMu() const { return twoMu_; }
+    // 2mu (1 - alpha): 4G/3 for the standard law in 3D (Strength.hpp).
+    double longitudinalStiffness() const override { return twoMu_ * (1.0 - this->deviatorWeight_); }
 
 protected:
     // For laws built on this one (vonMises, johnsonCook): the values read through their schema,

@@ -108,6 +108,11 @@ public:
 
     // G [Pa] (0 for none).
     double shearModulus() const { return shearModulus_; }
+    // M [Pa], what the law's elastic response adds to rho c^2 for a longitudinal (uniaxial-strain)
+    // wave: the normal deviatoric stress per unit strain of the Jaumann rate above, 2mu (1 - alpha)
+    // (4G/3 in 3D), so that the elastic wave speed is sqrt(c^2 + M/rho). 0 for a law without an
+    // elastic deviator. A time-step vote that leaves it out runs the shear part beyond its limit.
+    virtual double longitudinalStiffness() const { return 0.0; }
     // sqrt(3 J2) with the implied out-of-plane components (see the header comment).
     double equivalentStress(const SymmTensor<Dim>& tau) const;
     // sqrt(2/3 D':D') of the strain rate of L with the same deviator convention.

@@ -94,6 +94,29 @@ TEST(HookeanStrength, DeviatorThreeIsPlaneStrain) {
     EXPECT_THROW(make<2>("type hookean; shearModulus 27.1e9; deviator two;"), InputError);
 }
 
+// The Courant speed's M (Strength::longitudinalStiffness) is the law's own normal stress per unit
+// uniaxial strain, tau_xx = M eps in an elastic step: 4G/3 in 3D and in plane strain, G for the
+// thesis's 2D deviator, 2G/3 with the printed shearFactor 1, and 0 without a deviator.
+template <int Dim>
+void expectUniaxialModulus(const std::string& text, double expected) {
+    const auto law = make<Dim>(text);
+    EXPECT_NEAR(law->longitudinalStiffness(), expected, 1e-12 * shearG) << text;
+    if (!law->allocatesStress()) return;
+    Particle<Dim> p(*law, uniaxial<Dim>(1e3));
+    law->update(p.fields(), 1e-8);  // eps = 1e-5, far below yield (sigma_Y/G = 1e-2)
+    EXPECT_NEAR(p.tau(0, 0) / 1e-5, law->longitudinalStiffness(), 1e-9 * shearG) << text;
+}
+
+TEST(HookeanStrength, LongitudinalStiffnessIsTheUniaxialStrainModulus) {
+    expectUniaxialModulus<3>("type hookean; shearModulus 27.1e9;", 4.0 / 3.0 * shearG);
+    expectUniaxialModulus<3>("type hookean; shearModulus 27.1e9; shearFactor 1;", 2.0 / 3.0 * shearG);
+    expectUniaxialModulus<3>("type vonMises; " + al2024, 4.0 / 3.0 * shearG);
+    expectUniaxialModulus<2>("type vonMises; deviator three; " + al2024, 4.0 / 3.0 * shearG);
+    expectUniaxialModulus<2>("type hookean; shearModulus 27.1e9;", shearG);
+    expectUniaxialModulus<1>("type hookean; shearModulus 27.1e9; deviator three;", 4.0 / 3.0 * shearG);
+    expectUniaxialModulus<3>("type none;", 0.0);
+}
+
 TEST(HookeanStrength, OneDimensionNeedsDeviatorThree) {
     const auto thesis = make<1>("type hookean; shearModulus 27.1e9;");
     const auto strain = make<1>("type hookean; shearModulus 27.1e9; deviator three;");
