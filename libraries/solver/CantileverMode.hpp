@@ -18,6 +18,8 @@ public:
 
 private:
     double clampX_ = 0;
+    bool planeSections_ = false;  // `sections plane`: v_x = -(Y - neutralAxis) v_y'(s)
+    double neutralAxis_ = 0;
     std::optional<CantileverModeShape> mode_;  // set once the dictionary has been checked
 };
 

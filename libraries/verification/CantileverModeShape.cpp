@@ -8,7 +8,9 @@
 //
 // k = kL/L with kL = 1.875 (the first root of 1 + cos kL cosh kL = 0), so that v_y(L) = V_f at the
 // free end and v_y = v_y' = 0 at the clamp; v_y = 0 for s <= 0 (inside the clamp). Thin plates only:
-// the shape ignores shear. PySPH's Vf is a fraction of the sound speed; here V_f is in m/s.
+// the shape ignores shear. PySPH's Vf is a fraction of the sound speed; here V_f is in m/s. The
+// slope f'(s) = k [-M (sin ks + sinh ks) - N (cos ks - cosh ks)] gives the rotation rate of the
+// cross-sections, v_x = -(Y - Y0) v_y'(s) in the beam's own kinematics (CantileverMode `sections`).
 #include "verification/CantileverModeShape.hpp"
 
 #include "core/Error.hpp"
@@ -28,6 +30,17 @@ double CantileverModeShape::shape(double s) const {
     const double k = kL_ / length_, kL = kL_;
     const double M = std::sin(kL) + std::sinh(kL), N = std::cos(kL) + std::cosh(kL);
     return M * (std::cos(k * s) - std::cosh(k * s)) - N * (std::sin(k * s) - std::sinh(k * s));
+}
+
+double CantileverModeShape::shapeSlope(double s) const {
+    const double k = kL_ / length_, kL = kL_;
+    const double M = std::sin(kL) + std::sinh(kL), N = std::cos(kL) + std::cosh(kL);
+    return k * (-M * (std::sin(k * s) + std::sinh(k * s)) - N * (std::cos(k * s) - std::cosh(k * s)));
+}
+
+double CantileverModeShape::transverseVelocitySlope(double s) const {
+    if (s <= 0) return 0.0;
+    return velocity_ * shapeSlope(s) / shape(length_);
 }
 
 double CantileverModeShape::transverseVelocity(double s) const {

@@ -13,8 +13,12 @@ public:
 
     // The transverse velocity at distance s from the clamp: V_f f(s)/f(L), 0 for s <= 0.
     double transverseVelocity(double s) const;
-    // The unnormalised shape f(s).
+    // Its slope d v_y/ds = V_f f'(s)/f(L), 0 for s <= 0: the rate of rotation of the cross-section
+    // at s in the Euler-Bernoulli kinematics (plane sections normal to the axis).
+    double transverseVelocitySlope(double s) const;
+    // The unnormalised shape f(s) and its derivative f'(s).
     double shape(double s) const;
+    double shapeSlope(double s) const;
 
 private:
     double length_, velocity_, kL_;

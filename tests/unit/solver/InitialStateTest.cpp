@@ -151,6 +151,35 @@ TEST(InitialState, cantileverMode) {
     EXPECT_THROW(make<2>("type cantileverMode; length 0.2; velocity 0.05; thickness 0.3;"), InputError);
 }
 
+// `sections plane`: the mode in the beam's own kinematics, v_x = -(Y - Y0) v_y'(s) (the rotation of
+// the cross-section), v_y as before; the slope against a central difference of v_y, zero inside the
+// clamp and at its face, and the velocity gradient's symmetric part without the shear strain rate
+// dv_y/dX + dv_x/dY that `transverse` leaves (the rigid rotation of each section).
+TEST(InitialState, cantileverModePlaneSections) {
+    const auto plane =
+        make<2>("type cantileverMode; length 0.2; velocity 0.05; sections plane; neutralAxis 0.001;");
+    const auto transverse = make<2>("type cantileverMode; length 0.2; velocity 0.05;");
+    const CantileverModeShape mode(0.2, 0.05);
+    for (int i = 1; i <= 19; ++i) {
+        const double s = 0.01 * i, d = 1e-6;
+        const double slope = (mode.transverseVelocity(s + d) - mode.transverseVelocity(s - d)) / (2 * d);
+        EXPECT_NEAR(mode.transverseVelocitySlope(s), slope, 1e-8 * 0.05 / 0.2) << s;
+        const Vector<2> X(s, 0.009);
+        EXPECT_EQ(plane->velocity(X)(1), transverse->velocity(X)(1));
+        EXPECT_NEAR(plane->velocity(X)(0), -(0.009 - 0.001) * mode.transverseVelocitySlope(s), 1e-17);
+        // Shear strain rate dv_y/dX + dv_x/dY: v_y' - v_y' = 0 with plane sections, v_y' without.
+        const double dvxdY =
+            (plane->velocity(Vector<2>(s, 0.009 + d))(0) - plane->velocity(Vector<2>(s, 0.009 - d))(0)) /
+            (2 * d);
+        EXPECT_NEAR(slope + dvxdY, 0.0, 1e-8 * 0.05 / 0.2) << s;
+    }
+    EXPECT_EQ(plane->velocity(Vector<2>(-0.02, 0.01))(0), 0.0);   // inside the clamp
+    // Clamped: the rotation vanishes at the face, linearly (v_y' = v_y''(0) s, v_y''(0) = 4.39 1/s).
+    EXPECT_NEAR(mode.transverseVelocitySlope(1e-9), 0.0, 1e-8);
+    EXPECT_THROW(make<2>("type cantileverMode; length 0.2; velocity 0.05; sections curved;"), InputError);
+    EXPECT_THROW(make<2>("type cantileverMode; length 0.2; velocity 0.05; neutralAxis 0.01;"), InputError);
+}
+
 TEST(InitialState, applyVelocityToAllParticles) {
     ParticleSet<2> particles(3);
     std::vector<Vector<2>> X{Vector<2>(0, 0), Vector<2>(1, 0), Vector<2>(0, 1)};
