@@ -121,6 +121,9 @@ public:
         if (active(t)) ghostLayer(particles, velocity, hMax, block);
     }
     virtual bool makesGhosts() const { return false; }
+    // True for a condition whose whole effect is boundary forces (the addBoundaryForce hook): a
+    // solver that does not call that hook must refuse it (BoundaryConditionList::requireHooks).
+    virtual bool appliesForces() const { return false; }
     // The plane across which a total-Lagrangian method mirrors its reference configuration once
     // (BoundaryConditionList::referenceImages), with the images' parity: symmetryPlane +1,
     // skewSymmetricPlane -1 (GhostBlock.hpp). Null for every other condition.

@@ -29,6 +29,28 @@ bool BoundaryConditionList<Dim>::makesGhosts() const {
 }
 
 template <int Dim>
+void BoundaryConditionList<Dim>::requireHooks(const Dictionary& dict, const Hooks& hooks,
+                                              const std::string& solver) const {
+    const Dictionary& list = dict.isDict("boundaryConditions") ? dict.subDict("boundaryConditions") : dict;
+    for (const auto& c : conditions_) {
+        std::string needs;
+        if (c->makesGhosts() && !hooks.ghosts)
+            needs = "a layer of mirror ghost particles, which " + solver + " does not build";
+        if (c->appliesForces() && !hooks.boundaryForces)
+            needs = "boundary forces, which " + solver + " does not apply";
+        if (needs.empty()) continue;
+        std::string alternatives =
+            "the conditions that act on velocities and positions (fixed, prescribedVelocity, "
+            "symmetryPlane, rigidPlanarWall)";
+        if (hooks.ghosts) alternatives += ", mirrorPlane";
+        if (hooks.boundaryForces) alternatives += ", prescribedTraction";
+        throw list.error(c->name(), "boundary condition `" + c->name() + "` (" + c->type() +
+                                        ") acts through " + needs + ": it would have no effect. " + solver +
+                                        " applies " + alternatives);
+    }
+}
+
+template <int Dim>
 std::string BoundaryConditionList<Dim>::summary() const {
     std::string s;
     for (const auto& c : conditions_) s += c->describe() + "\n";

@@ -44,6 +44,15 @@ public:
     // Null when no condition has that name.
     const BoundaryCondition<Dim>* find(const std::string& name) const;
     bool makesGhosts() const;
+    // The hooks beyond the constraints (constrainAcceleration, constrainVelocity, constrainPosition)
+    // that a solver calls. A condition that acts only through a hook the solver does not call
+    // would be silently without effect: requireHooks refuses it at its entry of `dict` (the file
+    // the list was read from), naming the condition, what it needs and the solver.
+    struct Hooks {
+        bool ghosts = false;          // ghosts(): mirrorPlane's layer
+        bool boundaryForces = false;  // addBoundaryForces(): prescribedTraction
+    };
+    void requireHooks(const Dictionary& dict, const Hooks& hooks, const std::string& solver) const;
     // One line per condition, for the log.
     std::string summary() const;
 

@@ -27,6 +27,7 @@ public:
     // t(t) [Pa].
     VectorType traction(double t) const;
     double area() const { return area_; }
+    bool appliesForces() const override { return true; }
 
 protected:
     void boundaryForce(const ParticleSet<Dim>& particles, std::vector<VectorType>& force,

@@ -486,7 +486,7 @@ FpmSolver<Dim>::FpmSolver(SolverRun& run)
     readMaterials();
     initialiseFields();
     readManagement();
-    boundaryConditions_ = readBoundaryConditions(*owner_);
+    boundaryConditions_ = readBoundaryConditions(*owner_, {.ghosts = false, .boundaryForces = false});
     if (!boundaryConditions_.empty() && !(euler_ || shear_) && !prescribed_)
         Log::warning(
             "fpmSolid: boundary conditions with the rotation part alone act on v only, which it does not "

@@ -37,17 +37,22 @@ const Dictionary* Solver::openOptionalConstant(const std::string& name) {
 }
 
 template <int Dim>
-BoundaryConditionList<Dim> Solver::readBoundaryConditions(const ParticleSet<Dim>& particles) {
+BoundaryConditionList<Dim> Solver::readBoundaryConditions(
+    const ParticleSet<Dim>& particles, const typename BoundaryConditionList<Dim>::Hooks& hooks) {
     const Dictionary* dict = openOptionalConstant("boundaryConditions");
     if (!dict) return {};
     BoundaryConditionList<Dim> list(*dict, particles);
+    list.requireHooks(*dict, hooks, run_.application());
     Log::info("Boundary conditions:\n" + list.summary());
     return list;
 }
 
-template BoundaryConditionList<1> Solver::readBoundaryConditions(const ParticleSet<1>&);
-template BoundaryConditionList<2> Solver::readBoundaryConditions(const ParticleSet<2>&);
-template BoundaryConditionList<3> Solver::readBoundaryConditions(const ParticleSet<3>&);
+template BoundaryConditionList<1> Solver::readBoundaryConditions(const ParticleSet<1>&,
+                                                                 const BoundaryConditionList<1>::Hooks&);
+template BoundaryConditionList<2> Solver::readBoundaryConditions(const ParticleSet<2>&,
+                                                                 const BoundaryConditionList<2>::Hooks&);
+template BoundaryConditionList<3> Solver::readBoundaryConditions(const ParticleSet<3>&,
+                                                                 const BoundaryConditionList<3>::Hooks&);
 
 void Solver::checkPositiveMassAndDensity(const ParticleSetBase& particles, const std::vector<double>& mass,
                                          const std::vector<double>& density) {

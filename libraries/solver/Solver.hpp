@@ -89,9 +89,12 @@ protected:
     const Dictionary* openOptionalConstant(const std::string& name);
 
     // constant/boundaryConditions when the case has one (its conditions logged), else an empty
-    // list. The selections are made from `particles` as they are now.
+    // list. The selections are made from `particles` as they are now. `hooks`: what the solver
+    // calls beyond the constraints; a condition that needs another is refused at its entry
+    // (BoundaryConditionList::requireHooks).
     template <int Dim>
-    BoundaryConditionList<Dim> readBoundaryConditions(const ParticleSet<Dim>& particles);
+    BoundaryConditionList<Dim> readBoundaryConditions(
+        const ParticleSet<Dim>& particles, const typename BoundaryConditionList<Dim>::Hooks& hooks);
 
     // Every particle's mass and density positive (and not NaN); else an InputError naming the
     // first particle that is not.

@@ -180,7 +180,7 @@ SphSolver<Dim>::SphSolver(SolverRun& run)
             throw settings_.error("artificialStress",
                                   "artificial stress acts on solids: no material has a strength law");
     }
-    boundaries_ = readBoundaryConditions(*particles_);
+    boundaries_ = readBoundaryConditions(*particles_, {.ghosts = true, .boundaryForces = false});
     decomposition_ = run.decomposition();
     if (decomposition_) {
         // What the phases read of a neighbour before they refresh it themselves: the kernel

@@ -412,7 +412,7 @@ void TlSphSolver<Dim>::initialiseFields() {
     std::fill(smoothingLength.begin(), smoothingLength.end(), h_);
     // The boundary conditions pick their particles from the initial state (skewSymmetricPlane
     // from the reference positions), so they are built after it.
-    boundaries_ = readBoundaryConditions(*particles_);
+    boundaries_ = readBoundaryConditions(*particles_, {.ghosts = false, .boundaryForces = true});
     const std::string& essential = settings_.word("essentialBoundaryConditions");
     const bool lagrangeMultiplier = essential == "lagrangeMultiplier" && !boundaries_.empty();
     if (lagrangeMultiplier && decomposition_)
