@@ -888,6 +888,7 @@ void FpmSolver<Dim>::step(double dt) {
         auto timed = phase("fit");
         hField_.assign(n, h_);
         points_.assign(x_.begin(), x_.begin() + std::ptrdiff_t(n));
+        fit_.labelPoints(owner_->globalId().data());  // the first n particles are the points
         try {
             fit_.rebuild(points_, x_, rows_, hField_, *fitWeight_);
         } catch (const InputError&) {
@@ -895,9 +896,9 @@ void FpmSolver<Dim>::step(double dt) {
         } catch (const RunError&) {
             throw;
         } catch (const Error& e) {
-            // The fit's own diagnosis (point = particle index on this process, its position and
-            // neighbour counts, the remedies), with the time and the solver's remedy. Rank-local:
-            // with several ranks the run ends on this rank's error (the point is its index here).
+            // The fit's own diagnosis (the point's index on this process and its global id, its
+            // position and neighbour counts, the remedies), with the time and the solver's remedy.
+            // Rank-local: with several ranks the run ends on this rank's error.
             throw RunError(
                 "phase fit, step " + std::to_string(time().timeIndex() + 1) +
                 ", t = " + formatKeywordNumber(time().value() + dt) + ": " + e.what() +

@@ -414,10 +414,11 @@ void LeastSquaresOperators<Dim>::finish(const std::vector<Vector<Dim>>& points,
     for (std::size_t k = offsets_[a]; k < offsets_[a + 1]; ++k)
         if (k < w.size() && w[k] > 0.0) ++positive;
     std::ostringstream msg;
-    msg << "LeastSquaresOperators: point " << a << " at " << pointText<Dim>(points[a])
-        << " fails: " << statusName(status_[a]) << " (" << (offsets_[a + 1] - offsets_[a]) << " neighbours, "
-        << positive << " with a positive weight, order " << options_.order << ", " << basisSize()
-        << " basis terms";
+    msg << "LeastSquaresOperators: point " << a;
+    if (labels_) msg << " (particle " << labels_[a] << ")";
+    msg << " at " << pointText<Dim>(points[a]) << " fails: " << statusName(status_[a]) << " ("
+        << (offsets_[a + 1] - offsets_[a]) << " neighbours, " << positive << " with a positive weight, order "
+        << options_.order << ", " << basisSize() << " basis terms";
     if (options_.minNeighbours > basisSize())
         msg << ", at least " << options_.minNeighbours << " neighbours asked";
     if (options_.fallback == Fallback::growSupport)

@@ -79,6 +79,7 @@
 #include "particles/NeighbourList.hpp"
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -132,6 +133,10 @@ public:
                  const NeighbourList& rows, const std::vector<double>& h, const FitWeight& weight);
 
     const Options& options() const { return options_; }
+    // Names the points in the failure messages of the rebuilds that follow: point a is "particle
+    // labels[a]" (a global id, which a distributed run needs: a is the index on this process).
+    // The array must outlive those rebuilds; null (the default) names points by index only.
+    void labelPoints(const std::int64_t* labels) { labels_ = labels; }
     // Number of basis terms: Dim (+ Dim(Dim+1)/2 at order 2) (+ 1 in value form).
     int basisSize() const;
     std::size_t size() const { return status_.size(); }
@@ -185,6 +190,7 @@ private:
     }
 
     Options options_;
+    const std::int64_t* labels_ = nullptr;
     std::size_t particles_ = 0;
     std::vector<std::size_t> offsets_;
     std::vector<NeighbourList::Index> indices_;

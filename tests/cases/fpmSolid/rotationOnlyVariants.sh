@@ -69,7 +69,8 @@ awk -v dt="$dt" -v v="$vhi" 'BEGIN { e = 0.1 * 1.25 / v; exit !(dt > 0.999 * e &
 stress=$(entry "$a/12.5/rotationError" runMaxStressError)
 awk -v s="$stress" 'BEGIN { exit !(s <= 1e-9) }' || fail "adjustTimeStep: max |S - S_exact| = $stress > 1e-9"
 echo "adjustTimeStep: dt $dt = 0.1 x 1.25 / $vhi, max |S - S_exact| $stress"
-# A fit that cannot be made is a run error with the step, the time, the particle and the remedies:
+# A fit that cannot be made is a run error with the step, the time, the particle (its index here and
+# its global id) and the remedies:
 # the quadratic basis at h = 2 spacings has too few neighbours for its 10 terms at the surface.
 q="$WORK/order2"
 cp -r "$c" "$q"
@@ -78,7 +79,7 @@ sed -i 's/^startFrom .*/startFrom startTime;/' "$q/system/controlDict"
 sed -i 's/^order .*/order 2;/' "$q/constant/fpmProperties"
 rc=0; fpmSolid -case "$q" > "$q/log.fpmSolid" 2>&1 || rc=$?
 [ "$rc" = 1 ] || fail "order 2 at h = 2 spacings: exit status $rc, expected 1"
-grep -q "phase fit, step 1, t = [0-9.e-]*: LeastSquaresOperators: point [0-9]* at (.*neighbours.*fitFallback growSupport | shepard" "$q/log.fpmSolid" ||
+grep -q "phase fit, step 1, t = [0-9.e-]*: LeastSquaresOperators: point [0-9]* (particle [0-9]*) at (.*neighbours.*fitFallback growSupport | shepard" "$q/log.fpmSolid" ||
     fail "order 2: no diagnosis with step, time, point and remedy: $(tail -3 "$q/log.fpmSolid")"
 grep -q nan "$q/log.fpmSolid" && fail "order 2: NaN in the log"
 echo "order 2 at h = 2 spacings: $(grep -o 'phase fit, step 1.\{0,120\}' "$q/log.fpmSolid")"
