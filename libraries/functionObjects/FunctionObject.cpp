@@ -211,6 +211,10 @@ void FunctionObjectList::execute(bool solverWrites) {
     }
 }
 
+void FunctionObjectList::checkVote(const TimeStepVote& vote) {
+    for (auto& object : objects_) object->checkVote(vote);
+}
+
 std::string FunctionObjectList::stopRequest() const {
     for (const auto& object : objects_)
         if (object->stopRequested())

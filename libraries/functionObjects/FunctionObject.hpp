@@ -107,6 +107,9 @@ public:
     virtual void write() = 0;
     // Called after every step before due(): a check that must not wait for a write (health).
     virtual void check() {}
+    // Called with the solver's stable-time-step vote before each step takes it: a check of the
+    // vote itself (health: a collapsed step stops the run before the integrator uses it).
+    virtual void checkVote(const TimeStepVote& /*vote*/) {}
     // check(), due(), then write() and the stamp of that write (step, time, process CPU time).
     // (FunctionObjectList runs the same steps for all its objects, gathering in between.)
     void execute(bool solverWrites);
@@ -179,6 +182,8 @@ public:
     ~FunctionObjectList();
     // Called after every step (and once at the start).
     void execute(bool solverWrites);
+    // Called with each step's vote before the step (FunctionObject::checkVote).
+    void checkVote(const TimeStepVote& vote);
     std::vector<ErrorNorm> errorNorms() const;
     std::vector<std::string> summary() const;
     std::size_t size() const { return objects_.size(); }

@@ -11,7 +11,9 @@
 //   time step    the stable step the solver voted, against the first finite vote: a fall below
 //                minTimeStepFraction stops the run naming the vote's reason and its particle. The
 //                collapse is a symptom (an inverted particle, a runaway speed); the run would
-//                otherwise grind on for days at that step.
+//                otherwise grind on for days at that step. Checked on each vote before the step
+//                takes it (checkVote, every step): a leapfrog's kick after a collapse still spans
+//                half the step before, which can break the state before a check after the step.
 //   domain       particles outside the box (the health dict's domainMin/domainMax, else the
 //                method's own, MPM's grid): stop (onLeaving stop), or count and warn once.
 // At its writes (writeControl, default writeTime), a row of health.csv:
@@ -125,7 +127,7 @@ void Health::check() {
     Stopwatch watch;
     ++checks_;
     checkFinite();
-    checkTimeStep();
+    checkTimeStep(time.lastVote());
     checkDomain();
     seconds_ += watch.seconds();
 }
@@ -215,9 +217,14 @@ void Health::checkFinite() const {
                    "materials' constants and the boundary conditions acting there");
 }
 
-void Health::checkTimeStep() {
+void Health::checkVote(const TimeStepVote& vote) {
+    Stopwatch watch;
+    checkTimeStep(vote);
+    seconds_ += watch.seconds();
+}
+
+void Health::checkTimeStep(const TimeStepVote& vote) {
     const Time& time = context().time();
-    const TimeStepVote& vote = time.lastVote();
     if (!(vote.deltaT > 0) || !std::isfinite(vote.deltaT)) return;  // none yet, or "no limit"
     if (firstVote_ == 0) {
         firstVote_ = vote.deltaT;

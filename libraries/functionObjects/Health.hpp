@@ -14,13 +14,15 @@ public:
     Health(const Dictionary& dict, const std::string& name, const RunContext& context);
     static KeywordSchema keywords();
     void check() override;
+    // The time-step check on the vote before the step uses it (the same test as check()'s).
+    void checkVote(const TimeStepVote& vote) override;
     void write() override;
     std::vector<std::string> summary() const override;
 
 private:
     Health(const KeywordValues& values, const std::string& name, const RunContext& context);
     void checkFinite() const;
-    void checkTimeStep();
+    void checkTimeStep(const TimeStepVote& vote);
     void checkDomain();
     // "particle <id> at (x, y, z)": the position of global id `id` (owned here), for diagnoses.
     std::string describeParticle(std::int64_t id) const;
@@ -41,10 +43,10 @@ private:
     std::unique_ptr<CsvFile> csv_;
     std::vector<std::string> indicatorNames_;
     std::optional<Budget> first_;
-    double energyScale_ = 0;      // the largest |K| + |U| + |Phi| seen: the imbalance's reference
-    double lastImbalance_ = 0;    // relative to energyScale_, as of the latest write
-    double largestImbalance_ = 0; // the largest |relative imbalance| over the writes
-    double firstVote_ = 0;        // the first finite stable time step
+    double energyScale_ = 0;       // the largest |K| + |U| + |Phi| seen: the imbalance's reference
+    double lastImbalance_ = 0;     // relative to energyScale_, as of the latest write
+    double largestImbalance_ = 0;  // the largest |relative imbalance| over the writes
+    double firstVote_ = 0;         // the first finite stable time step
     double smallestVoteRatio_ = 1;
     std::string smallestVoteReason_;
     std::size_t outsideCount_ = 0;

@@ -386,6 +386,7 @@ int SolverRun::run(Solver& solver) {
         try {
             solver.preStep();
             vote = solver.stableTimeStep();
+            functions.checkVote(vote);
             dt = time.chooseDeltaT(vote);
         } catch (const RunError&) {
             // A state the vote cannot judge (an equation of state out of range, a collapsed
