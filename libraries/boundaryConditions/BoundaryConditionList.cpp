@@ -41,7 +41,7 @@ void BoundaryConditionList<Dim>::requireHooks(const Dictionary& dict, const Hook
         if (needs.empty()) continue;
         std::string alternatives =
             "the conditions that act on velocities and positions (fixed, prescribedVelocity, "
-            "symmetryPlane, rigidPlanarWall)";
+            "symmetryPlane, skewSymmetricPlane, rigidPlanarWall)";
         if (hooks.ghosts) alternatives += ", mirrorPlane";
         if (hooks.boundaryForces) alternatives += ", prescribedTraction";
         throw list.error(c->name(), "boundary condition `" + c->name() + "` (" + c->type() +

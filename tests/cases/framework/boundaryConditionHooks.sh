@@ -34,7 +34,7 @@ refused tlSph "$cube" "$mirror" "boundary condition \`image\` (mirrorPlane) acts
 fpm=$(caseOf fpmSolid/rotationOnly fpm)
 refused fpmSolid "$fpm" "$mirror" "(mirrorPlane) acts through a layer of mirror ghost particles, which fpmSolid does not build"
 refused fpmSolid "$fpm" "$traction" "(prescribedTraction) acts through boundary forces, which fpmSolid does not apply"
-grep -qF "fpmSolid applies the conditions that act on velocities and positions (fixed, prescribedVelocity, symmetryPlane, rigidPlanarWall)" "$fpm/log" ||
+grep -qF "fpmSolid applies the conditions that act on velocities and positions (fixed, prescribedVelocity, symmetryPlane, skewSymmetricPlane, rigidPlanarWall)" "$fpm/log" ||
     fail "fpmSolid's refusal does not name what it applies: $(tail -n 2 "$fpm/log")"
 # The controls: one step each where the solver applies the condition.
 mfDictionary "$sod/system/controlDict" -entry endTime -set 1e-4 > /dev/null
