@@ -126,8 +126,7 @@ void Health::check() {
     if (time.timeIndex() % checkInterval_ != 0) return;
     Stopwatch watch;
     ++checks_;
-    checkFinite();
-    checkTimeStep(time.lastVote());
+    checkFinite();  // the time step is judged on each vote before the step (checkVote)
     checkDomain();
     seconds_ += watch.seconds();
 }

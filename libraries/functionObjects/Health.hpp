@@ -14,7 +14,8 @@ public:
     Health(const Dictionary& dict, const std::string& name, const RunContext& context);
     static KeywordSchema keywords();
     void check() override;
-    // The time-step check on the vote before the step uses it (the same test as check()'s).
+    // The time-step check, on each vote before the step uses it (check() after the step does not
+    // judge the vote again).
     void checkVote(const TimeStepVote& vote) override;
     void write() override;
     std::vector<std::string> summary() const override;

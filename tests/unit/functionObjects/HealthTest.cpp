@@ -23,14 +23,16 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* adjustableControl = "endTime 1; deltaT 1e-3; adjustTimeStep yes; minDeltaT 0; writeControl timeStep; "
-                                "writeInterval 1;\n";
+const char* adjustableControl =
+    "endTime 1; deltaT 1e-3; adjustTimeStep yes; minDeltaT 0; writeControl timeStep; "
+    "writeInterval 1;\n";
 
 // A run context whose energy terms and indicators a test sets by hand.
 class BudgetContext final : public RunContext {
 public:
     explicit BudgetContext(const fs::path& root)
-        : case_(root), time_(root / "system" / "controlDict", Dictionary::parse(adjustableControl, "controlDict")) {
+        : case_(root),
+          time_(root / "system" / "controlDict", Dictionary::parse(adjustableControl, "controlDict")) {
         time_.start(0, "0");
         particles.resize(3);
         auto& mass = particles.scalarField("mass");
@@ -87,6 +89,18 @@ std::string runError(FunctionObject& health, bool writes = false) {
     return "no error";
 }
 
+// A step as SolverRun takes it: the vote checked before the step (FunctionObject::checkVote), then
+// the step; the check's RunError, or "no error".
+std::string voteAndStep(FunctionObject& health, BudgetContext& c, double vote, std::int64_t particle = -1) {
+    try {
+        health.checkVote({vote, "Courant", particle});
+    } catch (const RunError& e) {
+        return e.what();
+    }
+    c.step(vote, particle);
+    return "no error";
+}
+
 std::string inputError(const std::string& text, const RunContext& c) {
     try {
         make(text, c);
@@ -117,26 +131,26 @@ TEST(Health, aPlantedNaNStopsTheRunNamingTheParticleAndTheField) {
 TEST(Health, aCollapsingTimeStepStopsTheRunNamingTheVoteAndItsParticle) {
     BudgetContext c(freshCase("dt"));
     auto health = make("minTimeStepFraction 1e-3;", c);
-    c.step(1e-3, 10);
+    EXPECT_EQ(voteAndStep(*health, c, 1e-3, 10), "no error");
     EXPECT_EQ(runError(*health), "no error");
-    c.step(2e-6, 12);  // 2e-3 of the first vote: above the fraction
+    EXPECT_EQ(voteAndStep(*health, c, 2e-6, 12), "no error");  // 2e-3 of the first vote: above the fraction
     EXPECT_EQ(runError(*health), "no error");
-    c.step(5e-7, 12);  // 5e-4: below
-    const std::string e = runError(*health);
+    const std::string e = voteAndStep(*health, c, 5e-7, 12);  // 5e-4: below, stopped before the step
+    EXPECT_NE(e.find("health check, phase time-step vote before step 3,"), std::string::npos) << e;
     EXPECT_NE(e.find("collapsed to 5e-07 s, 0.0005 of its first value 0.001 s"), std::string::npos) << e;
     EXPECT_NE(e.find("the limit: Courant, particle 12 at (1 0.25)"), std::string::npos) << e;
     EXPECT_NE(e.find("minTimeStepFraction 0"), std::string::npos) << e;  // how to switch it off
+    EXPECT_EQ(c.time().timeIndex(), 2);
+    // The check after a step does not judge the vote again (it was judged before the step).
+    EXPECT_EQ(runError(*health), "no error");
 }
 
 TEST(Health, anInfiniteVoteIsNoLimitAndNotTheFirstValue) {
     BudgetContext c(freshCase("inf"));
     auto health = make("minTimeStepFraction 0.5;", c);
-    c.step(std::numeric_limits<double>::infinity());  // particles at rest
-    EXPECT_EQ(runError(*health), "no error");
-    c.step(1e-3);
-    EXPECT_EQ(runError(*health), "no error");
-    c.step(4e-4);
-    EXPECT_NE(runError(*health).find("0.4 of its first value 0.001 s"), std::string::npos);
+    EXPECT_EQ(voteAndStep(*health, c, std::numeric_limits<double>::infinity()), "no error");  // at rest
+    EXPECT_EQ(voteAndStep(*health, c, 1e-3), "no error");
+    EXPECT_NE(voteAndStep(*health, c, 4e-4).find("0.4 of its first value 0.001 s"), std::string::npos);
 }
 
 TEST(Health, aParticleOutsideTheDomainStopsOrIsCounted) {
@@ -147,7 +161,8 @@ TEST(Health, aParticleOutsideTheDomainStopsOrIsCounted) {
     c.particles.position()[2].x() = 1.25;
     c.step(1e-3);
     const std::string e = runError(*health);
-    EXPECT_NE(e.find("particle 12 at (1.25 0.25), speed 0 left the domain (0 0) to (1 1)"), std::string::npos) << e;
+    EXPECT_NE(e.find("particle 12 at (1.25 0.25), speed 0 left the domain (0 0) to (1 1)"), std::string::npos)
+        << e;
     EXPECT_NE(e.find("onLeaving warn"), std::string::npos) << e;
 
     // The method's box, and onLeaving warn: counted, the run goes on.
@@ -182,7 +197,8 @@ TEST(Health, theEnergyImbalanceIsTheBudgetLessItsFirstValueAgainstTheLargestEner
     EXPECT_EQ(rows[1][8], 0.0);
     EXPECT_EQ(rows[2][8], -0.25);
     EXPECT_NEAR(rows[2][9], -0.25 / 3, 1e-10);  // the CSV keeps 10 digits
-    EXPECT_NE(health->summary().at(0).find("energy imbalance -8.33% (largest 8.33%) of 3;"), std::string::npos)
+    EXPECT_NE(health->summary().at(0).find("energy imbalance -8.33% (largest 8.33%) of 3;"),
+              std::string::npos)
         << health->summary().at(0);
 
     auto strict = make("writeControl timeStep; maxEnergyImbalance 0.05;", c);
@@ -223,7 +239,8 @@ TEST(Health, badInputNamesTheKeyword) {
     EXPECT_NE(inputError("domainMin (0 0);", c).find("give both domainMin and domainMax"), std::string::npos);
     EXPECT_NE(inputError("domainMin (0 0 0); domainMax (1 1 1);", c).find("expected 2 components"),
               std::string::npos);
-    EXPECT_NE(inputError("domainMin (0 1); domainMax (1 1);", c).find("must exceed domainMin"), std::string::npos);
+    EXPECT_NE(inputError("domainMin (0 1); domainMax (1 1);", c).find("must exceed domainMin"),
+              std::string::npos);
     EXPECT_NE(inputError("minTimeStepFraction 1;", c).find("minTimeStepFraction"), std::string::npos);
     EXPECT_NE(inputError("onLeaving remove;", c).find("stop"), std::string::npos);
 }
