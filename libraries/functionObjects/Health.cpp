@@ -11,9 +11,10 @@
 //   time step    the stable step the solver voted, against the first finite vote: a fall below
 //                minTimeStepFraction stops the run naming the vote's reason and its particle. The
 //                collapse is a symptom (an inverted particle, a runaway speed); the run would
-//                otherwise grind on for days at that step. Checked on each vote before the step
-//                takes it (checkVote, every step): a leapfrog's kick after a collapse still spans
-//                half the step before, which can break the state before a check after the step.
+//                otherwise grind on for days at that step. Checked on every vote before the step
+//                takes it (checkVote, every step whatever checkInterval says), not after it: a
+//                leapfrog's kick after a collapse still spans half the step before, which can break
+//                the state before a check after the step.
 //   domain       particles outside the box (the health dict's domainMin/domainMax, else the
 //                method's own, MPM's grid): stop (onLeaving stop), or count and warn once.
 // At its writes (writeControl, default writeTime), a row of health.csv:
