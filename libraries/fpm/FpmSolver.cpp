@@ -785,7 +785,8 @@ void FpmSolver<Dim>::initialiseFields() {
     }
     // The reference holds for the rotation part alone with a prescribed rigid rotation from t = 0.
     reference_ = prescribed_ && rotation_;
-    if (euler_ || shear_) {  // this run's start, for the state-change measure
+    budget_ = euler_ || shear_;  // where U is measured
+    if (euler_ || shear_) {      // this run's start, for the state-change measure
         rhoStart_ = rho_;
         pStart_ = *p_;
         vStart_ = v_;
@@ -922,8 +923,10 @@ void FpmSolver<Dim>::step(double dt) {
                 edgeParticles_ += std::size_t(std::count(edge_.begin(), edge_.end(), 1));
             }
             surfaceParticles_ += surface_->surfaceCount();
+            const double before = budget_ ? ownedEnergy(n) : 0.0;
             applyFreeSurface(std::nullopt);  // the step starts from a state that satisfies the conditions
-            refreshHalo();                   // the conditions changed p and S (the fits' values)
+            if (budget_) schemeDissipation_ -= ownedEnergy(n) - before;
+            refreshHalo();  // the conditions changed p and S (the fits' values)
         }
         grown_ += fit_.fallbackCounts().grown;
         shepard_ += fit_.fallbackCounts().shepard;
@@ -943,6 +946,9 @@ void FpmSolver<Dim>::step(double dt) {
         }
         first = false;
         const double dts = stage.fraction * dt;
+        const bool measured =
+            budget_ && stage.part != fpm::Subsystem::rotation;  // the exact rotation keeps |v|, S : S
+        if (measured) rememberStageStart(n);
         switch (stage.part) {
             case fpm::Subsystem::shear:
                 shearStage(dts, stage.fraction);
@@ -957,19 +963,34 @@ void FpmSolver<Dim>::step(double dt) {
         // the free surface's conditions, then the velocity conditions on what the stage left (v at
         // the step's end time: a Dirichlet value holds on the boundary particles throughout, the
         // surface's characteristic velocity included: a clamped surface particle stays clamped)
-        if (stage.part != fpm::Subsystem::rotation && surface_) applyFreeSurface(stage.part);
-        if (stage.part != fpm::Subsystem::rotation && !boundaryConditions_.empty())
+        if (measured) schemeDissipation_ -= stageStartPower(n);
+        if (stage.part != fpm::Subsystem::rotation && surface_) {
+            const double before = budget_ ? ownedEnergy(n) : 0.0;
+            applyFreeSurface(stage.part);
+            if (budget_) schemeDissipation_ -= ownedEnergy(n) - before;
+        }
+        if (stage.part != fpm::Subsystem::rotation && !boundaryConditions_.empty()) {
+            const double before = budget_ ? ownedKinetic(n) : 0.0;
             boundaryConditions_.constrainVelocity(*owner_, v_, time().value() + dt);
+            if (budget_) externalWork_ += ownedKinetic(n) - before;
+        }
     }
     {
         // V <- V (1 + dt div v): the Euler part's div v_uw where it runs (so that rho V stays the
         // mass to O(dt^2)), else the central div v of the step's start.
         auto timed = phase("volume");
         std::vector<double>& V = *V_;
+        const double volumeBefore = budget_ && outerPressure_ != 0
+                                        ? GlobalReduce::sum<double>(n, [&](std::size_t i) { return V[i]; })
+                                        : 0.0;
         if (divergence_.empty())
             parallelFor(n, [&](std::size_t i) { V[i] *= 1.0 + dt * gradVStart[i].trace(); });
         else
             parallelFor(n, [&](std::size_t i) { V[i] *= 1.0 + dt * divergence_[i]; });
+        if (budget_ && outerPressure_ != 0)  // the outer pressure's work on the body's change of volume
+            externalWork_ -=
+                outerPressure_ *
+                (GlobalReduce::sum<double>(n, [&](std::size_t i) { return V[i]; }) - volumeBefore);
     }
     if (moving) {  // the velocity the stages accumulated (Euler: v_uw or its correction; shear: v_D)
         auto timed = phase("motion");
@@ -981,12 +1002,14 @@ void FpmSolver<Dim>::step(double dt) {
     }
     if (prescribed_) {
         auto timed = phase("motion");
+        const double before = budget_ ? ownedKinetic(n) : 0.0;
         const Tensor<3> Q3 = fpm::axisRotation(axis_, omega_, dt);
         const Tensor<Dim> Q = Q3.template topLeftCorner<Dim, Dim>();
         parallelFor(n, [&](std::size_t i) {
             x_[i] = centre_ + Q * (x_[i] - centre_);
             v_[i] = prescribedVelocity(x_[i]);
         });
+        if (budget_) externalWork_ += ownedKinetic(n) - before;
     }
     checkState(
         "rotation", n,
@@ -1048,7 +1071,11 @@ void FpmSolver<Dim>::step(double dt) {
     // objects read).
     if (decomposition_) owner_->clearGhosts();
     // last, on the moved and checked state: the next step's neighbours see the new particles
-    if (management_ && (time().timeIndex() + 1) % managementInterval_ == 0) manageParticles();
+    if (management_ && (time().timeIndex() + 1) % managementInterval_ == 0) {
+        const double before = budget_ ? ownedEnergy(owner_->ownedCount()) : 0.0;
+        manageParticles();
+        if (budget_) schemeDissipation_ -= ownedEnergy(owner_->ownedCount()) - before;
+    }
 }
 
 // The Euler part (fpm/EulerPart.hpp) on the fit of this step: c from each particle's equation of
@@ -1643,21 +1670,90 @@ void FpmSolver<Dim>::measureRotationError(double t) {
 }
 
 template <int Dim>
+double FpmSolver<Dim>::internalEnergyOf(std::size_t i) const {
+    if (e_) return owner_->scalarField("mass")[i] * (*e_)[i];
+    double u = 0;
+    if (shear_ && mu_[i] > 0) {
+        const Tensor<Dim> S = (*S_)[i].full();
+        u += (S.array() * S.array()).sum() / (4.0 * mu_[i]);
+    }
+    const double K = c_.size() > i ? rho_[i] * c_[i] * c_[i] : 0.0;
+    if (K > 0) u += (*p_)[i] * (*p_)[i] / (2.0 * K);
+    return (*V_)[i] * u;
+}
+
+template <int Dim>
 std::optional<double> FpmSolver<Dim>::internalEnergy() const {
     if (!euler_ && !shear_) return std::nullopt;
+    return GlobalReduce::sum<double>(x_.size(), [&](std::size_t i) { return internalEnergyOf(i); });
+}
+
+// The energy budget. K + U (U as internalEnergy() says) changes in a step by
+//   - each stage's advance (forward Euler on its rates r = (a, dp/dt, dS/dt, de/dt) at the stage's
+//     start state y0): the integrator's own quadrature of the stage's power is the left point,
+//     dt P(y0) = sum_i [m v0 . dv + V (p0 dp / K + S0 : dS / (2 mu))] (or m de where e is evolved),
+//     dv, dp, dS, de the stage's changes (the plastic return's within the shear stage's dS). The
+//     semi-discrete scheme's loss -dt P is D: the upwinding's dissipation and the central
+//     operators' error together (they are not skew-adjoint, so no pair form separates them);
+//   - the free surface's resets (p = p_o, S n = 0, the characteristic velocity): their change of
+//     K + U is the condition's own loss, in D; with p_o != 0 the outer pressure's work on the body,
+//     -p_o sum_i dV_i at the volume update, is in W;
+//   - the velocity conditions (and a prescribed motion): their change of K is in W;
+//   - particle management's merging and insertion: their change of K + U is in D.
+// What is left in the imbalance: the forward Euler stages' own gain, exactly
+// sum_i [m |dv|^2 / 2 + V (dp^2 / (2K) + dS : dS / (4 mu))] per stage where K, V and mu hold (first
+// order in dt over a run), and the linearised elastic energy's own mismatch (U is not an invariant
+// of the hypo-elastic model: V's update, K = rho c^2 following rho, O(strain) of U).
+template <int Dim>
+double FpmSolver<Dim>::ownedKinetic(std::size_t n) const {
     const std::vector<double>& m = owner_->scalarField("mass");
-    if (e_) return GlobalReduce::sum<double>(x_.size(), [&](std::size_t i) { return m[i] * (*e_)[i]; });
-    const std::vector<double>& V = *V_;
-    return GlobalReduce::sum<double>(x_.size(), [&](std::size_t i) {
+    return GlobalReduce::sum<double>(n, [&](std::size_t i) { return 0.5 * m[i] * v_[i].squaredNorm(); });
+}
+
+template <int Dim>
+double FpmSolver<Dim>::ownedEnergy(std::size_t n) const {
+    const std::vector<double>& m = owner_->scalarField("mass");
+    return GlobalReduce::sum<double>(
+        n, [&](std::size_t i) { return 0.5 * m[i] * v_[i].squaredNorm() + internalEnergyOf(i); });
+}
+
+template <int Dim>
+void FpmSolver<Dim>::rememberStageStart(std::size_t n) {
+    stageStart_.v.assign(v_.begin(), v_.begin() + std::ptrdiff_t(n));
+    stageStart_.rho.assign(rho_.begin(), rho_.begin() + std::ptrdiff_t(n));
+    stageStart_.p.assign(p_->begin(), p_->begin() + std::ptrdiff_t(n));
+    if (e_) stageStart_.e.assign(e_->begin(), e_->begin() + std::ptrdiff_t(n));
+    if (S_) stageStart_.S.assign(S_->begin(), S_->begin() + std::ptrdiff_t(n));
+}
+
+template <int Dim>
+double FpmSolver<Dim>::stageStartPower(std::size_t n) const {
+    const std::vector<double>& m = owner_->scalarField("mass");
+    const StageStart& s = stageStart_;
+    return GlobalReduce::sum<double>(n, [&](std::size_t i) {
+        double power = m[i] * s.v[i].dot(v_[i] - s.v[i]);
+        if (e_) return power + m[i] * ((*e_)[i] - s.e[i]);
         double u = 0;
         if (shear_ && mu_[i] > 0) {
-            const Tensor<Dim> S = (*S_)[i].full();
-            u += (S.array() * S.array()).sum() / (4.0 * mu_[i]);
+            const Tensor<Dim> S0 = s.S[i].full(), dS = (*S_)[i].full() - S0;
+            u += (S0.array() * dS.array()).sum() / (2.0 * mu_[i]);
         }
-        const double K = c_.size() == x_.size() ? rho_[i] * c_[i] * c_[i] : 0.0;
-        if (K > 0) u += (*p_)[i] * (*p_)[i] / (2.0 * K);
-        return V[i] * u;
+        const double K = c_.size() > i ? s.rho[i] * c_[i] * c_[i] : 0.0;
+        if (K > 0) u += s.p[i] * ((*p_)[i] - s.p[i]) / K;
+        return power + (*V_)[i] * u;
     });
+}
+
+template <int Dim>
+std::optional<double> FpmSolver<Dim>::schemeDissipation() const {
+    if (!budget_) return std::nullopt;
+    return schemeDissipation_;
+}
+
+template <int Dim>
+std::optional<double> FpmSolver<Dim>::externalWork() const {
+    if (!budget_) return std::nullopt;
+    return externalWork_;
 }
 
 template <int Dim>

@@ -53,14 +53,13 @@ public:
     // energy sum V (S : S / (4 mu) + p^2 / (2 K)), K = rho c^2 of the step's start, where the
     // shear or Euler part runs; none for the rotation part alone.
     std::optional<double> internalEnergy() const override;
+    // The energy budget of the health check (FpmSolver.cpp, "the energy budget"): D, the loss of
+    // each stage's rates at its start (the integrator's left-point quadrature: upwinding and the
+    // central operators' error together), the free surface's resets and particle management; W, the
+    // velocity conditions' kinetic jumps and the outer pressure's work -p_o sum dV.
+    std::optional<double> schemeDissipation() const override;
+    std::optional<double> externalWork() const override;
     // neighbourDeficiency and fitConditioning of the fit the next step makes (FpmSolver.cpp).
-    // The energy budget's D and W are not measured (the health check's imbalance contains them):
-    // the central FPM operators are not skew-adjoint, so a stage's discrete "physical power"
-    // sum V (v . div sigma + sigma : grad v) is not a boundary term and its difference from the
-    // stage's change of K + U is the upwinding's loss and the central scheme's error together; and
-    // the free surface's resets (p = p_o, S n = 0, the characteristic velocity) change U and K by
-    // amounts that are part work of p_o and part the condition's own loss. A sound split needs the
-    // stage re-evaluated centrally (twice the cost) and a surface area per particle.
     std::vector<HealthIndicator> healthIndicators() const override;
 
     // The rotation-only reference (see the top of this file), measured after each step.
@@ -214,6 +213,21 @@ private:
     std::vector<SymmTensor<Dim>>* S_ = nullptr;  // null where no part needs a deviator
     SymmTensor<Dim> stressOf(std::size_t i) const { return S_ ? (*S_)[i] : SymmTensor<Dim>{}; }
     std::vector<SymmTensor<Dim>> noStress_;  // applyFreeSurface's zero deviator where S_ is null
+
+    // The energy budget (FpmSolver.cpp, "the energy budget"): measured where U is (euler or shear).
+    double internalEnergyOf(std::size_t i) const;  // the particle's share of internalEnergy()
+    double ownedEnergy(std::size_t n) const;       // sum over the first n of 1/2 m |v|^2 + its U
+    double ownedKinetic(std::size_t n) const;
+    void rememberStageStart(std::size_t n);
+    double stageStartPower(
+        std::size_t n) const;  // sum_i of the stage's change dotted with its start's gradient of K + U
+    struct StageStart {
+        std::vector<Vector<Dim>> v;
+        std::vector<double> rho, p, e;
+        std::vector<SymmTensor<Dim>> S;
+    } stageStart_;
+    bool budget_ = false;
+    double schemeDissipation_ = 0, externalWork_ = 0;
 
     NeighbourSearch<Dim> search_;
     NeighbourList rows_;
