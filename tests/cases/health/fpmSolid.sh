@@ -46,14 +46,16 @@ faultCase outside position 0 50
 expect outside "health check" "particle 3 at (50 " "left the domain" "Remedy"
 echo "outside: $(grep -m1 -o 'particle 3 at [^;]*' "$log")"
 
+# healthyRun <dir> <deltaT> <steps between health writes>: the sphere to t = 0.5 at a fixed step.
+healthyRun() {
+    cp -r "$base" "$1"
+    sed -i "s/^endTime .*/endTime         0.5;/; s/^writeInterval .*/writeInterval   0.5;/; s/^deltaT .*/deltaT $2;/" "$1/system/controlDict"
+    echo "functions { health { type health; writeControl timeStep; writeInterval $3; } }" >> "$1/system/controlDict"
+    fpmSolid -case "$1" > "$1/log.fpmSolid" 2>&1 || fail "the healthy run at dt $2 failed: $(tail -n 20 "$1/log.fpmSolid")"
+}
 # The healthy run to t = 0.5 (500 steps), the health check every 50 steps.
 c="$WORK/healthy"
-cp -r "$base" "$c"
-sed -i 's/^endTime .*/endTime         0.5;/; s/^writeInterval .*/writeInterval   0.5;/' "$c/system/controlDict"
-cat >> "$c/system/controlDict" << EOF
-functions { health { type health; writeControl timeStep; writeInterval 50; } }
-EOF
-fpmSolid -case "$c" > "$c/log.fpmSolid" 2>&1 || fail "the healthy run failed: $(tail -n 20 "$c/log.fpmSolid")"
+healthyRun "$c" 0.001 50
 csv="$c/postProcessing/health/0/health.csv"
 [ -f "$csv" ] || fail "no $csv"
 read -r fewest deficient conditioning illConditioned < <(awk -F, 'NR == 1 { for (i = 1; i <= NF; ++i) h[$i] = i; next }
@@ -74,12 +76,7 @@ awk -v n="$fewest" 'BEGIN { exit !(n >= 8) }' || fail "fewest neighbours $fewest
 lastRow() { awk -F, -v want="$2" 'NR == 1 { for (i = 1; i <= NF; ++i) h[$i] = i; next } { row = $0; split(row, f, ",") }
     END { n = split(want, w, " "); for (k = 1; k <= n; ++k) printf "%s ", f[h[w[k]]]; print "" }' "$1"; }
 half="$WORK/healthyHalfStep"
-cp -r "$base" "$half"
-sed -i 's/^endTime .*/endTime         0.5;/; s/^writeInterval .*/writeInterval   0.5;/; s/^deltaT .*/deltaT 0.0005;/' "$half/system/controlDict"
-cat >> "$half/system/controlDict" << EOF
-functions { health { type health; writeControl timeStep; writeInterval 100; } }
-EOF
-fpmSolid -case "$half" > "$half/log.fpmSolid" 2>&1 || fail "the healthy run at dt / 2 failed: $(tail -n 20 "$half/log.fpmSolid")"
+healthyRun "$half" 0.0005 100
 read -r K1 D1 W1 I1 < <(lastRow "$csv" "kineticEnergy dissipated externalWork energyImbalance")
 read -r K2 D2 W2 I2 < <(lastRow "$half/postProcessing/health/0/health.csv" "kineticEnergy dissipated externalWork energyImbalance")
 E0=$(awk -F, 'NR == 2 { print $5 }' "$csv")
