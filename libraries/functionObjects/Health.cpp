@@ -37,7 +37,9 @@
 #include "core/Error.hpp"
 #include "core/Parallel.hpp"
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <sstream>
 
@@ -155,6 +157,10 @@ std::string Health::describeParticle(std::int64_t id) const {
     return "particle " + std::to_string(id);
 }
 
+namespace {
+constexpr std::size_t finiteBlock = 65536;  // values a block of the non-finite scan
+}
+
 void Health::checkFinite() const {
     const FieldStore& fields = context().fields();
     const std::size_t n = context().ownedParticles();
@@ -167,15 +173,20 @@ void Health::checkFinite() const {
     for (const FieldBase* f : real) {
         const double* v = static_cast<const double*>(f->data());
         const std::size_t m = n * std::size_t(f->components());
-        if (m < 65536) {  // LocalReduce's blocks cost more than such a stream
-            // x - x is 0 for a finite x and NaN else: an OR of comparisons, which vectorises.
-            unsigned nonFinite = 0;
-            for (std::size_t k = 0; k < m; ++k) nonFinite |= unsigned(!(v[k] - v[k] == 0.0));
-            local += double(nonFinite);
-        } else {
-            local +=
-                LocalReduce::sum<double>(m, [v](std::size_t k) { return std::isfinite(v[k]) ? 0.0 : 1.0; });
-        }
+        // A double is not finite when its 11 exponent bits are all set: (bits & exponent) + 2^52
+        // then reaches bit 63, and no finite value does. An OR of integer sums, which vectorises
+        // (the floating-point test x - x == 0 did not: a third of the check's time on MPM); in
+        // blocks, threads over the blocks (one block below 65536 values: no threads' start-up).
+        const auto nonFinite = [v, m](std::size_t b) {
+            constexpr std::uint64_t exponent = 0x7ff0000000000000, carry = 0x0010000000000000;
+            const std::size_t end = std::min(m, (b + 1) * finiteBlock);
+            std::uint64_t flag = 0;
+            for (std::size_t k = b * finiteBlock; k < end; ++k)
+                flag |= (std::bit_cast<std::uint64_t>(v[k]) & exponent) + carry;
+            return double(flag >> 63);
+        };
+        const std::size_t blocks = (m + finiteBlock - 1) / finiteBlock;
+        local += blocks == 1 ? nonFinite(0) : LocalReduce::sum<double>(blocks, nonFinite);
     }
     if (globalSum(local) == 0) return;
     auto bad = [&](std::size_t i) {
