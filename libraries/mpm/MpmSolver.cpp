@@ -223,6 +223,8 @@ void MpmSolver<Dim>::readMaterials() {
     plastic_ = materials_->usesPlasticState();
     assignMaterials(*particles_, materials_->names(), materialProperties_);
     material_ = &particles_->integerField("material");
+    givenJacobian_ =
+        particles_->hasField("jacobian");  // from the particle file or the state, before ul_ adds it
     ul_ = std::make_unique<UpdatedLagrangianStress<Dim>>(*materials_, *particles_);
     materialWaveSpeed_.assign(materials_->size(), 0.0);
     for (std::size_t k = 0; k < materials_->size(); ++k)
@@ -252,12 +254,20 @@ void MpmSolver<Dim>::initialiseFields() {
                             ") at " + vectorText<Dim>(x_[i]) + " lies outside the grid, which spans " +
                             vectorText<Dim>(grid_.origin()) + " to " + vectorText<Dim>(grid_.upperCorner()) +
                             ": enlarge the grid (origin, cells) to cover every particle");
+    // F only where a law reads it (leave out what a scene does not need): a constitutiveLaw (a
+    // function of F) on some material, or a state that carries F. The equation-of-state path (the
+    // fluids, the strength laws) needs only J, advanced as J <- det(I + dt L) J (updateStress).
     const bool hadF = particles_->hasField("deformationGradient");
-    F_ = &particles_->tensorField("deformationGradient");
-    if (!hadF) std::fill(F_->begin(), F_->end(), Tensor<Dim>::Identity());
+    bool lawOfF = hadF;
+    for (std::size_t k = 0; k < materials_->size(); ++k) lawOfF = lawOfF || !ul_->handles(std::int64_t(k));
+    if (lawOfF) {
+        F_ = &particles_->tensorField("deformationGradient");
+        if (!hadF) std::fill(F_->begin(), F_->end(), Tensor<Dim>::Identity());
+    }
     sigma_ = &particles_->symmTensorField("cauchyStress");
     if (Dim < 3) sigmaZZ_ = &particles_->scalarField("cauchyStressZZ");
     J_ = &particles_->scalarField("jacobian");
+    if (!F_ && !givenJacobian_) std::fill(J_->begin(), J_->end(), 1.0);
     W_ = &particles_->scalarField("storedEnergyDensity");
     if (velocityUpdate_->affine()) C_ = &particles_->tensorField("affineVelocity");
     if (plastic_) {
@@ -779,19 +789,26 @@ void MpmSolver<Dim>::updateStress(double dt, bool advanceState) {
                 for (int b = 0; b < Dim; ++b)
                     for (int a = 0; a < Dim; ++a) L(a, b) += v[a] * g[b];
             }
-            (*F_)[p] = (Tensor<Dim>::Identity() + dt * L) * (*F_)[p];
+            if (F_) (*F_)[p] = (Tensor<Dim>::Identity() + dt * L) * (*F_)[p];
         }
-        const Tensor<3> F3 = embed<Dim>((*F_)[p], 1.0);
+        // Without F (no law reads it): J^{n+1} = det(I + dt L) J^n, the determinant of the same
+        // update (plane strain: F_zz = 1).
+        const Tensor<3> F3 = F_ ? embed<Dim>((*F_)[p], 1.0) : Tensor<3>::Identity();
+        const double Jnow =
+            F_ ? F3.determinant()
+               : (move ? embed<Dim>(Tensor<Dim>(Tensor<Dim>::Identity() + dt * L), 1.0).determinant() *
+                             (*J_)[p]
+                       : (*J_)[p]);
         // An inverted particle (J <= 0) keeps its last stress: the state check stops the run on
         // its J, and the state written for diagnosis holds no NaN of a law evaluated out of range.
-        if (const double Jnow = F3.determinant(); !(Jnow > 0)) {
+        if (!(Jnow > 0)) {
             (*J_)[p] = Jnow;
             return;
         }
         if (ul_->handles((*material_)[p])) {
             // Equation of state + strength: p and tau advanced with L over the step from the
             // J of the previous step (UpdatedLagrangianStress.hpp); W = rho0 e.
-            const double Jnew = F3.determinant();
+            const double Jnew = Jnow;
             ul_->update(p, L, (*J_)[p], Jnew, rho0_[p], dt, advanceState, (*sigma_)[p],
                         sigmaZZ_ ? &(*sigmaZZ_)[p] : nullptr, (*W_)[p]);
             (*J_)[p] = Jnew;
@@ -846,7 +863,7 @@ void MpmSolver<Dim>::smoothPressure() {
     f.mass = m_;
     f.referenceDensity = rho0_;
     f.material = *material_;
-    f.deformationGradient = *F_;
+    if (F_) f.deformationGradient = *F_;  // empty where no law reads F
     f.jacobian = *J_;
     f.cauchyStress = *sigma_;
     if (sigmaZZ_) f.cauchyStressZZ = *sigmaZZ_;
@@ -1025,7 +1042,7 @@ void MpmSolver<Dim>::checkTorn() {
 template <int Dim>
 void MpmSolver<Dim>::checkFinite(const char* phaseName) const {
     auto bad = [&](std::size_t i) {
-        return !x_[i].allFinite() || !v_[i].allFinite() || !(*F_)[i].allFinite() || !((*J_)[i] > 0) ||
+        return !x_[i].allFinite() || !v_[i].allFinite() || (F_ && !(*F_)[i].allFinite()) || !((*J_)[i] > 0) ||
                !(*sigma_)[i].full().allFinite();
     };
     Solver::checkState(phaseName, ownedCount(), bad, [&](std::size_t i, double count) {

@@ -34,9 +34,11 @@
 // impactSph, an equationOfState with an optional strength law (UpdatedLagrangianStress.hpp).
 //
 // Fields: position, velocity, mass, density (rho0; V0 = mass / density), region (the body),
-// material, deformationGradient F (I at a fresh start), cauchyStress (SymmTensor<Dim>: particle
-// fields have the set's dimension) and below 3D cauchyStressZZ (the out-of-plane sigma_zz of
-// plane strain), jacobian (det F), storedEnergyDensity (W per reference volume);
+// material, deformationGradient F (I at a fresh start; only where a constitutiveLaw reads it: the
+// equation-of-state path of fluids and strength laws carries J alone, J <- det(I + dt L) J),
+// cauchyStress (SymmTensor<Dim>: particle fields have the set's dimension) and below 3D
+// cauchyStressZZ (the out-of-plane sigma_zz of plane strain), jacobian (det F, 1 at a fresh start),
+// storedEnergyDensity (W per reference volume);
 // affineVelocity C_p with APIC; plasticDeformation, plasticStrain with a plastic law.
 //
 // With `contact multiField;` each body (particleGen region) has its own node mass, momentum,
@@ -186,7 +188,8 @@ private:
     std::vector<double>& m_;
     std::vector<double>& rho0_;
     std::vector<std::int64_t>* material_ = nullptr;
-    std::vector<Tensor<Dim>>* F_ = nullptr;
+    std::vector<Tensor<Dim>>* F_ = nullptr;  // null where no law reads F (J alone)
+    bool givenJacobian_ = false;             // the particle file or the state gave J
     std::vector<SymmTensor<Dim>>* sigma_ = nullptr;
     std::vector<double>* sigmaZZ_ = nullptr;  // below 3D: sigma_zz of plane strain
     std::vector<double>* J_ = nullptr;

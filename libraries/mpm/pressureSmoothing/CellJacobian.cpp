@@ -7,7 +7,8 @@
 //     Jbar_c  = sum_p V0_p J_p / sum_p V0_p               (the cell's present volume of this fluid
 //                                                          over its reference volume)
 //     F_p     <- (Jbar_c / J_p)^(1/dim) F_p,  J_p <- Jbar_c    (det F_p = Jbar_c; in plane strain
-//                                                          dim = 2: F_zz = 1 stays)
+//                                                          dim = 2: F_zz = 1 stays; where the
+//                                                          run carries F: a fluid-only scene has J)
 //     sigma_p <- sigma_p + (P(rho0/J_p) - P(rho0/Jbar_c)) I  (the pressure of the equation of state
 //                                                          at Jbar_c with the particle's energy;
 //                                                          below 3D also sigma_zz)
@@ -60,7 +61,7 @@ void CellJacobian<Dim>::apply(const CartesianGrid<Dim>& grid, PressureSmoothingF
         for (const std::uint32_t p : members) {
             const double J = f.jacobian[p];
             const double shift = f.pressureAt(p, J) - f.pressureAt(p, mean);
-            f.deformationGradient[p] *= std::pow(mean / J, 1.0 / Dim);
+            if (!f.deformationGradient.empty()) f.deformationGradient[p] *= std::pow(mean / J, 1.0 / Dim);
             f.jacobian[p] = mean;
             for (int d = 0; d < Dim; ++d) f.cauchyStress[p](d, d) += shift;
             if (!f.cauchyStressZZ.empty()) f.cauchyStressZZ[p] += shift;
@@ -73,7 +74,8 @@ template class CellJacobian<1>;
 template class CellJacobian<2>;
 template class CellJacobian<3>;
 
-MFDYN_REGISTER_DIM(PressureSmoothing, CellJacobian, "cellJacobian",
-                   "each fluid particle's J the reference-volume-weighted mean of its cell's, F scaled to it (F-bar)");
+MFDYN_REGISTER_DIM(
+    PressureSmoothing, CellJacobian, "cellJacobian",
+    "each fluid particle's J the reference-volume-weighted mean of its cell's, F scaled to it (F-bar)");
 
 }  // namespace mfdyn
