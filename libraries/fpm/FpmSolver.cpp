@@ -1670,8 +1670,8 @@ void FpmSolver<Dim>::measureRotationError(double t) {
 }
 
 template <int Dim>
-double FpmSolver<Dim>::internalEnergyOf(std::size_t i) const {
-    if (e_) return owner_->scalarField("mass")[i] * (*e_)[i];
+double FpmSolver<Dim>::internalEnergyOf(std::size_t i, const std::vector<double>& m) const {
+    if (e_) return m[i] * (*e_)[i];
     double u = 0;
     if (shear_ && mu_[i] > 0) {
         const Tensor<Dim> S = (*S_)[i].full();
@@ -1685,7 +1685,8 @@ double FpmSolver<Dim>::internalEnergyOf(std::size_t i) const {
 template <int Dim>
 std::optional<double> FpmSolver<Dim>::internalEnergy() const {
     if (!euler_ && !shear_) return std::nullopt;
-    return GlobalReduce::sum<double>(x_.size(), [&](std::size_t i) { return internalEnergyOf(i); });
+    const std::vector<double>& m = owner_->scalarField("mass");
+    return GlobalReduce::sum<double>(x_.size(), [&](std::size_t i) { return internalEnergyOf(i, m); });
 }
 
 // The energy budget. K + U (U as internalEnergy() says) changes in a step by
@@ -1714,7 +1715,7 @@ template <int Dim>
 double FpmSolver<Dim>::ownedEnergy(std::size_t n) const {
     const std::vector<double>& m = owner_->scalarField("mass");
     return GlobalReduce::sum<double>(
-        n, [&](std::size_t i) { return 0.5 * m[i] * v_[i].squaredNorm() + internalEnergyOf(i); });
+        n, [&](std::size_t i) { return 0.5 * m[i] * v_[i].squaredNorm() + internalEnergyOf(i, m); });
 }
 
 template <int Dim>

@@ -215,8 +215,9 @@ private:
     std::vector<SymmTensor<Dim>> noStress_;  // applyFreeSurface's zero deviator where S_ is null
 
     // The energy budget (FpmSolver.cpp, "the energy budget"): measured where U is (euler or shear).
-    double internalEnergyOf(std::size_t i) const;  // the particle's share of internalEnergy()
-    double ownedEnergy(std::size_t n) const;       // sum over the first n of 1/2 m |v|^2 + its U
+    // the particle's share of internalEnergy(); m the particles' masses
+    double internalEnergyOf(std::size_t i, const std::vector<double>& m) const;
+    double ownedEnergy(std::size_t n) const;  // sum over the first n of 1/2 m |v|^2 + its U
     double ownedKinetic(std::size_t n) const;
     void rememberStageStart(std::size_t n);
     double stageStartPower(
