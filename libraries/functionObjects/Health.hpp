@@ -25,6 +25,7 @@ private:
     void checkFinite() const;
     void checkTimeStep(const TimeStepVote& vote);
     void checkDomain();
+    void checkEnergyGrowth();
     // "particle <id> at (x, y, z)": the position of global id `id` (owned here), for diagnoses.
     std::string describeParticle(std::int64_t id) const;
     struct Budget {
@@ -37,6 +38,8 @@ private:
     long checkInterval_;
     double minTimeStepFraction_;
     std::optional<double> maxEnergyImbalance_;
+    double energyGrowthLimit_;  // 0: no growth check (not given, or the work not measured)
+    long energyCheckInterval_;
     bool stopOnLeaving_;
     std::optional<DomainBox> domain_;
     std::string domainSource_;
@@ -47,7 +50,11 @@ private:
     double energyScale_ = 0;       // the largest |K| + |U| + |Phi| seen: the imbalance's reference
     double lastImbalance_ = 0;     // relative to energyScale_, as of the latest write
     double largestImbalance_ = 0;  // the largest |relative imbalance| over the writes
-    double firstVote_ = 0;         // the first finite stable time step
+    // The growth check: K + U + Phi + D - W at its first measurement (the energy the run started
+    // with, less what came in since), and the most energy put in so far.
+    std::optional<double> growthBaseline_;
+    double energyInput_ = 0;
+    double firstVote_ = 0;  // the first finite stable time step
     double smallestVoteRatio_ = 1;
     std::string smallestVoteReason_;
     std::size_t outsideCount_ = 0;

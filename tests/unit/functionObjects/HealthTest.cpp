@@ -1,6 +1,7 @@
 // health (issue 20 item 1) on hand-made states: a planted NaN, a collapsing time step and a
 // particle outside the domain each stop with a RunError naming the particle, the field or the
-// vote's reason, and a remedy; the energy budget's imbalance is (K + U + Phi + D - W) less its first
+// vote's reason, and a remedy; K + U above energyGrowthLimit times the energy put in stops the run
+// naming the fastest particle (not where the work is unmeasured, nor without the limit); the energy budget's imbalance is (K + U + Phi + D - W) less its first
 // value, exactly, against the largest energy; the method's indicators become CSV columns and a
 // warning; the controlDict forms (default on, `health off;`, settings, set twice) and bad input.
 // The states are binary-exact (halves and quarters), so the budget's figures are exact.
@@ -60,7 +61,8 @@ public:
     }
 
     ParticleSet<2> particles;
-    double internal = 2, dissipated = 0, work = 0;
+    double internal = 2, dissipated = 0;
+    std::optional<double> work = 0.0;
     std::vector<HealthIndicator> indicators;
     std::optional<DomainBox> box;
 
@@ -209,6 +211,45 @@ TEST(Health, theEnergyImbalanceIsTheBudgetLessItsFirstValueAgainstTheLargestEner
     EXPECT_NE(e.find("the energy imbalance is -9.09% of the largest energy 2.75 (maxEnergyImbalance 0.05)"),
               std::string::npos)
         << e;
+}
+
+TEST(Health, energyAboveTheLimitTimesTheEnergyPutInStopsNamingTheFastestParticle) {
+    const fs::path root = freshCase("growth");
+    BudgetContext c(root);
+    c.particles.vectorField("velocity")[0] = Vector<2>(1, 1);  // K = 1, U = 2: 3 at the first check
+    auto health = make("energyGrowthLimit 1.5; energyCheckInterval 2;", c);
+    c.step(1e-3);
+    EXPECT_EQ(runError(*health), "no error");  // the first check: the baseline, 3
+    c.work = 1.5;                              // put in: 4.5, so the limit is 6.75
+    c.internal = 5.5;
+    c.particles.vectorField("velocity")[1] = Vector<2>(1, 0);  // K = 1.5, K + U = 7, but step 1 is no check
+    EXPECT_EQ(runError(*health), "no error");
+    c.particles.vectorField("velocity")[1] = Vector<2>(0.5, 0);  // K = 1.125: 6.625, below 6.75
+    c.step(1e-3);
+    EXPECT_EQ(runError(*health), "no error");
+    c.work = 1;                                                // the most put in stays 4.5
+    c.particles.vectorField("velocity")[2] = Vector<2>(0, 2);  // K = 3.125: 8.625 = 1.917 x 4.5
+    c.step(1e-3);
+    c.step(1e-3);
+    const std::string e = runError(*health);
+    EXPECT_NE(e.find("phase energyGrowth, end of step 4"), std::string::npos) << e;
+    EXPECT_NE(e.find("the energy K + U grew to 8.625, 1.917 times the energy put in 4.5"), std::string::npos)
+        << e;
+    EXPECT_NE(e.find("above energyGrowthLimit 1.5"), std::string::npos) << e;
+    EXPECT_NE(e.find("the fastest: particle 12 at (1 0.25), speed 2"), std::string::npos) << e;
+    EXPECT_NE(e.find("Remedy"), std::string::npos) << e;
+
+    // Without the work measured a growth may be energy put in: not checked; nor without the limit.
+    for (const char* settings : {"energyGrowthLimit 1.5; energyCheckInterval 1;", "energyCheckInterval 1;"}) {
+        BudgetContext d(freshCase("growthUnchecked"));
+        if (std::string(settings).find("energyGrowthLimit") != std::string::npos) d.work.reset();
+        auto unchecked = make(settings, d);
+        d.step(1e-3);
+        EXPECT_EQ(runError(*unchecked), "no error") << settings;
+        d.internal = 100;  // 50 times the first K + U
+        d.step(1e-3);
+        EXPECT_EQ(runError(*unchecked), "no error") << settings;
+    }
 }
 
 TEST(Health, theMethodsIndicatorsAreColumnsAndWarnWhenTheyCountParticles) {
