@@ -77,6 +77,7 @@ public:
     std::optional<double> potentialEnergy() const override { return run_.potentialEnergy(); }
     std::optional<double> schemeDissipation() const override { return run_.schemeDissipation(); }
     std::optional<double> externalWork() const override { return run_.externalWork(); }
+    bool energyBudgetCloses() const override { return run_.energyBudgetCloses(); }
     std::vector<HealthIndicator> healthIndicators() const override { return run_.healthIndicators(); }
     std::optional<DomainBox> domain() const override { return run_.domain(); }
     std::size_t ownedParticles() const override;

@@ -29,13 +29,14 @@
 //                solver measures the external work W: the energy put in, E_in = the largest over the
 //                checks of (K + U)_0 + (W - W_0) - (Phi - Phi_0), against K + U; above L x E_in the
 //                run stops naming the fastest particle (tlSph's own check, on by default there, has
-//                the same rule). Off by default: it needs a budget closed step by step, and on
-//                2026-12-08 mpmFsi's was not (gravity's nodal increments a grid condition removes
-//                count in W but never reached K or Phi: the hanging block "grew" 5.5-fold in 20
-//                steps), nor fpmSolid's under velocity conditions (the boundary's stress power is
-//                not in W); impactSph's is. The clamped plate of tutorials/fpmSolid/oscillatingPlate
-//                with the traction condition grew 500-fold in 0.1 s with every other check silent:
-//                with L = 1.5 it stops at 0.039 s.
+//                the same rule). L defaults to 1.5 where the method says its budget closes step by
+//                step (RunContext::energyBudgetCloses: impactSph), else the check is off unless set:
+//                on 2026-12-08, on by default everywhere, mpmFsi's budget did not close (gravity's
+//                nodal increments a grid condition removes count in W but never reached K or Phi:
+//                the hanging block "grew" 5.5-fold in 20 steps), nor fpmSolid's under velocity
+//                conditions (the driven boundary's stress power is not in W). The clamped plate of
+//                tutorials/fpmSolid/oscillatingPlate with the traction condition grew 500-fold in
+//                0.1 s with every other check silent: with L = 1.5 it stops at 0.039 s.
 //   indicators   the method's own (RunContext::healthIndicators: neighbour deficiency,
 //                tensile instability, hourglass), each with the count of particles past its
 //                threshold; a warning the first time a count is not zero.
@@ -57,6 +58,8 @@
 namespace mfdyn {
 
 namespace {
+
+constexpr double defaultGrowthLimit = 1.5;  // tlSph's energyGrowthLimit's default
 
 std::string number(double value, const char* format = "%.6g") {
     char s[64];
@@ -85,8 +88,9 @@ KeywordSchema Health::keywords() {
         .scalar("energyGrowthLimit", "-",
                 "stop when K + U exceeds this multiple of the energy put in (the first K + U plus the "
                 "external work and the potential energy released; where the solver measures the "
-                "work; off without it: see the source)")
-        .greaterThan(0)
+                "work; default 1.5 where the method's budget closes step by step (impactSph), else "
+                "off: see the source); 0: off")
+        .atLeast(0)
         .optional()
         .integer("energyCheckInterval", "steps", "steps between the energy-growth checks")
         .orDefault(10)
@@ -115,7 +119,7 @@ Health::Health(const KeywordValues& values, const std::string& name, const RunCo
       checkInterval_(values.integer("checkInterval")),
       minTimeStepFraction_(values.scalar("minTimeStepFraction")),
       maxEnergyImbalance_(values.optionalScalar("maxEnergyImbalance")),
-      energyGrowthLimit_(values.optionalScalar("energyGrowthLimit").value_or(0.0)),
+      givenGrowthLimit_(values.optionalScalar("energyGrowthLimit")),
       energyCheckInterval_(values.integer("energyCheckInterval")),
       stopOnLeaving_(values.word("onLeaving") == "stop") {
     const bool lower = values.given("domainMin"), upper = values.given("domainMax");
@@ -153,6 +157,9 @@ void Health::check() {
     ++checks_;
     checkFinite();  // the time step is judged on each vote before the step (checkVote)
     checkDomain();
+    if (checks_ == 1)  // the method is built by now: on where its budget closes, unless set
+        energyGrowthLimit_ =
+            givenGrowthLimit_.value_or(context().energyBudgetCloses() ? defaultGrowthLimit : 0.0);
     if (energyGrowthLimit_ > 0 && (!growthBaseline_ || time.timeIndex() % energyCheckInterval_ == 0))
         checkEnergyGrowth();
     seconds_ += watch.seconds();

@@ -38,7 +38,8 @@ private:
     long checkInterval_;
     double minTimeStepFraction_;
     std::optional<double> maxEnergyImbalance_;
-    double energyGrowthLimit_;  // 0: no growth check (not given, or the work not measured)
+    std::optional<double> givenGrowthLimit_;  // energyGrowthLimit as given
+    double energyGrowthLimit_ = 0;            // 0: no growth check (off, or the work not measured)
     long energyCheckInterval_;
     bool stopOnLeaving_;
     std::optional<DomainBox> domain_;

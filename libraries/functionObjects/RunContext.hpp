@@ -35,6 +35,10 @@ public:
     //                      body forces
     virtual std::optional<double> schemeDissipation() const { return std::nullopt; }
     virtual std::optional<double> externalWork() const { return std::nullopt; }
+    // Whether that budget closes step by step (K + U + Phi + D - W constant to the time error in
+    // every configuration the method runs): the health check's energy-growth stop is then on by
+    // default (Health.cpp).
+    virtual bool energyBudgetCloses() const { return false; }
     // The method's indicators of a degrading discretisation, computed now (the health check calls
     // it at its writes only: it may cost a pass over the neighbours).
     virtual std::vector<HealthIndicator> healthIndicators() const { return {}; }

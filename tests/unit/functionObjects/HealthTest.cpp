@@ -1,7 +1,8 @@
 // health (issue 20 item 1) on hand-made states: a planted NaN, a collapsing time step and a
 // particle outside the domain each stop with a RunError naming the particle, the field or the
 // vote's reason, and a remedy; K + U above energyGrowthLimit times the energy put in stops the run
-// naming the fastest particle (not where the work is unmeasured, nor without the limit); the energy budget's imbalance is (K + U + Phi + D - W) less its first
+// naming the fastest particle, by default where the method's budget closes (not where the work is
+// unmeasured, nor with the limit 0); the energy budget's imbalance is (K + U + Phi + D - W) less its first
 // value, exactly, against the largest energy; the method's indicators become CSV columns and a
 // warning; the controlDict forms (default on, `health off;`, settings, set twice) and bad input.
 // The states are binary-exact (halves and quarters), so the budget's figures are exact.
@@ -52,6 +53,7 @@ public:
     std::optional<double> internalEnergy() const override { return internal; }
     std::optional<double> schemeDissipation() const override { return dissipated; }
     std::optional<double> externalWork() const override { return work; }
+    bool energyBudgetCloses() const override { return closes; }
     std::vector<HealthIndicator> healthIndicators() const override { return indicators; }
     std::optional<DomainBox> domain() const override { return box; }
     // One step of the time loop: the vote, dt, t += dt.
@@ -63,6 +65,7 @@ public:
     ParticleSet<2> particles;
     double internal = 2, dissipated = 0;
     std::optional<double> work = 0.0;
+    bool closes = false;
     std::vector<HealthIndicator> indicators;
     std::optional<DomainBox> box;
 
@@ -239,16 +242,28 @@ TEST(Health, energyAboveTheLimitTimesTheEnergyPutInStopsNamingTheFastestParticle
     EXPECT_NE(e.find("the fastest: particle 12 at (1 0.25), speed 2"), std::string::npos) << e;
     EXPECT_NE(e.find("Remedy"), std::string::npos) << e;
 
-    // Without the work measured a growth may be energy put in: not checked; nor without the limit.
-    for (const char* settings : {"energyGrowthLimit 1.5; energyCheckInterval 1;", "energyCheckInterval 1;"}) {
-        BudgetContext d(freshCase("growthUnchecked"));
-        if (std::string(settings).find("energyGrowthLimit") != std::string::npos) d.work.reset();
-        auto unchecked = make(settings, d);
+    // Not checked: without the work measured (a growth may be energy put in), without the limit
+    // where the method's budget does not close, with the limit 0. Checked by default where it closes.
+    struct Case {
+        const char* settings;
+        bool work, closes, stops;
+    };
+    for (const Case& k : {Case{"energyGrowthLimit 1.5;", false, true, false}, Case{"", true, false, false},
+                          Case{"energyGrowthLimit 0;", true, true, false}, Case{"", true, true, true}}) {
+        BudgetContext d(freshCase("growthDefault"));
+        if (!k.work) d.work.reset();
+        d.closes = k.closes;
+        auto health = make(std::string(k.settings) + " energyCheckInterval 1;", d);
         d.step(1e-3);
-        EXPECT_EQ(runError(*unchecked), "no error") << settings;
+        EXPECT_EQ(runError(*health), "no error") << k.settings;
         d.internal = 100;  // 50 times the first K + U
         d.step(1e-3);
-        EXPECT_EQ(runError(*unchecked), "no error") << settings;
+        const std::string e = runError(*health);
+        EXPECT_EQ(e.find("phase energyGrowth") != std::string::npos, k.stops) << k.settings << ": " << e;
+        if (k.stops)
+            EXPECT_NE(e.find("grew to 100, 50 times the energy put in 2 (the largest so far"),
+                      std::string::npos)
+                << e;
     }
 }
 
