@@ -168,6 +168,10 @@ void Health::check() {
 void Health::checkEnergyGrowth() {
     const Budget b = measureBudget();
     if (!b.hasWork) {  // the work is not measured: a growth may be energy put in
+        if (givenGrowthLimit_)
+            Log::warning("health: energyGrowthLimit " + number(*givenGrowthLimit_) +
+                         " is not applied: this run's method does not measure the external work, so a "
+                         "growth cannot be told from energy put in");
         energyGrowthLimit_ = 0;
         return;
     }

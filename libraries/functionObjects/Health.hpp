@@ -51,8 +51,8 @@ private:
     double energyScale_ = 0;       // the largest |K| + |U| + |Phi| seen: the imbalance's reference
     double lastImbalance_ = 0;     // relative to energyScale_, as of the latest write
     double largestImbalance_ = 0;  // the largest |relative imbalance| over the writes
-    // The growth check: K + U + Phi + D - W at its first measurement (the energy the run started
-    // with, less what came in since), and the most energy put in so far.
+    // The growth check: K + U + Phi - W at its first measurement (so that K + U + Phi - W constant
+    // means nothing was made), and the most energy put in so far.
     std::optional<double> growthBaseline_;
     double energyInput_ = 0;
     double firstVote_ = 0;  // the first finite stable time step
